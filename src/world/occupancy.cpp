@@ -1,0 +1,117 @@
+#include "world/occupancy.h"
+
+#include <algorithm>
+
+namespace datomsim::world {
+namespace {
+
+// Dense storage stays while the box has at most this many slots per stored cell (plus a floor so
+// that small worlds never bother with hashing).
+constexpr int64_t kMaxSlotsPerCell = 16;
+constexpr int64_t kAlwaysDenseSlots = int64_t{1} << 22;
+
+}  // namespace
+
+void Occupancy::insert(const geometry::Cell& cell, uint32_t value) {
+  if (!sparse_ && denseSlot(cell) < 0) growToInclude(cell);
+  if (sparse_) {
+    const uint64_t key = packCell(cell);
+    if (!sparseIndex_.find(key)) ++count_;
+    sparseIndex_.insert(key, value);
+    return;
+  }
+  uint32_t& slot = dense_[static_cast<size_t>(denseSlot(cell))];
+  if (slot == kEmpty) ++count_;
+  slot = value;
+}
+
+void Occupancy::erase(const geometry::Cell& cell) {
+  if (sparse_) {
+    const uint64_t key = packCell(cell);
+    if (sparseIndex_.find(key)) --count_;
+    sparseIndex_.erase(key);
+    return;
+  }
+  const int64_t slot = denseSlot(cell);
+  if (slot >= 0 && dense_[static_cast<size_t>(slot)] != kEmpty) {
+    dense_[static_cast<size_t>(slot)] = kEmpty;
+    --count_;
+  }
+}
+
+void Occupancy::clear() { *this = Occupancy(); }
+
+size_t Occupancy::memoryBytes() const {
+  return dense_.capacity() * sizeof(uint32_t) + sparseIndex_.memoryBytes();
+}
+
+void Occupancy::growToInclude(const geometry::Cell& cell) {
+  const int32_t shift = geometry::floorHalf(cell.z);
+  const int64_t gx = int64_t{cell.x} + shift;
+  const int64_t gy = int64_t{cell.y} + shift;
+  const int64_t gz = cell.z;
+
+  // The new box covers the old one and the cell, with slack on the side it grew towards, so that
+  // filling a box cell by cell regrows only a logarithmic number of times.
+  Box grown = box_;
+  auto extend = [](int32_t& origin, int32_t& extent, int64_t coordinate) {
+    if (extent == 0) {
+      origin = static_cast<int32_t>(coordinate);
+      extent = 1;
+      return;
+    }
+    const int64_t slack = std::max<int64_t>(4, extent / 2);
+    if (coordinate < origin) {
+      const int64_t newOrigin = coordinate - slack;
+      extent = static_cast<int32_t>(extent + (origin - newOrigin));
+      origin = static_cast<int32_t>(newOrigin);
+    } else if (coordinate >= int64_t{origin} + extent) {
+      extent = static_cast<int32_t>(coordinate - origin + 1 + slack);
+    }
+  };
+  extend(grown.x0, grown.nx, gx);
+  extend(grown.y0, grown.ny, gy);
+  extend(grown.z0, grown.nz, gz);
+
+  const int64_t volume = int64_t{grown.nx} * grown.ny * grown.nz;
+  if (volume > std::max(kAlwaysDenseSlots, kMaxSlotsPerCell * int64_t(count_ + 1)) ||
+      !isPackable(cell)) {
+    switchToSparse();
+    return;
+  }
+
+  // Move every stored value into the larger box.
+  std::vector<uint32_t> old(static_cast<size_t>(volume), kEmpty);
+  old.swap(dense_);
+  const Box oldBox = box_;
+  box_ = grown;
+  for (int32_t z = 0; z < oldBox.nz; ++z) {
+    for (int32_t y = 0; y < oldBox.ny; ++y) {
+      const size_t from = (size_t(z) * oldBox.ny + y) * oldBox.nx;
+      const size_t to = ((size_t(z + oldBox.z0 - box_.z0)) * box_.ny + (y + oldBox.y0 - box_.y0)) *
+                            box_.nx +
+                        (oldBox.x0 - box_.x0);
+      std::copy_n(old.begin() + from, oldBox.nx, dense_.begin() + to);
+    }
+  }
+}
+
+void Occupancy::switchToSparse() {
+  sparseIndex_.reserve(count_ * 2);
+  for (int32_t z = 0; z < box_.nz; ++z) {
+    for (int32_t y = 0; y < box_.ny; ++y) {
+      for (int32_t x = 0; x < box_.nx; ++x) {
+        const uint32_t value = dense_[(size_t(z) * box_.ny + y) * box_.nx + x];
+        if (value == kEmpty) continue;
+        const int32_t cz = z + box_.z0;
+        const int32_t shift = geometry::floorHalf(cz);
+        sparseIndex_.insert(packCell({x + box_.x0 - shift, y + box_.y0 - shift, cz}), value);
+      }
+    }
+  }
+  sparse_ = true;
+  dense_ = {};
+  box_ = {};
+}
+
+}  // namespace datomsim::world

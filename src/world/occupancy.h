@@ -1,0 +1,63 @@
+// Which module, if any, sits in each cell: the hottest lookup of the simulator.
+//
+// Dense while the modules are compact: one 32-bit slot per cell of their bounding box (in grid
+// coordinates x + floor(z/2), y + floor(z/2), z, where a box of modules is a box of slots), so a
+// 1000x1000x2 box costs 8 MB and a lookup is one load. When the modules are so scattered that the
+// box would be mostly empty, it switches for good to a flat hash table (cell_index.h).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/cell.h"
+#include "world/cell_index.h"
+
+namespace datomsim::world {
+
+class Occupancy {
+ public:
+  static constexpr uint32_t kEmpty = UINT32_MAX;
+
+  // The value stored at the cell, or kEmpty.
+  uint32_t find(const geometry::Cell& cell) const {
+    if (!sparse_) {
+      const int64_t slot = denseSlot(cell);
+      return slot < 0 ? kEmpty : dense_[static_cast<size_t>(slot)];
+    }
+    const auto found = sparseIndex_.find(packCell(cell));
+    return found ? *found : kEmpty;
+  }
+
+  // Stores a value (not kEmpty) at a cell, replacing any.
+  void insert(const geometry::Cell& cell, uint32_t value);
+  void erase(const geometry::Cell& cell);
+  void clear();
+
+  bool isSparse() const { return sparse_; }
+  size_t memoryBytes() const;
+
+ private:
+  struct Box {
+    int32_t x0 = 0, y0 = 0, z0 = 0;
+    int32_t nx = 0, ny = 0, nz = 0;
+  };
+
+  int64_t denseSlot(const geometry::Cell& cell) const {
+    const int32_t shift = geometry::floorHalf(cell.z);
+    const int64_t gx = int64_t{cell.x} + shift - box_.x0;
+    const int64_t gy = int64_t{cell.y} + shift - box_.y0;
+    const int64_t gz = int64_t{cell.z} - box_.z0;
+    if (gx < 0 || gy < 0 || gz < 0 || gx >= box_.nx || gy >= box_.ny || gz >= box_.nz) return -1;
+    return (gz * box_.ny + gy) * box_.nx + gx;
+  }
+  void growToInclude(const geometry::Cell& cell);
+  void switchToSparse();
+
+  bool sparse_ = false;
+  size_t count_ = 0;
+  Box box_;
+  std::vector<uint32_t> dense_;
+  CellIndex sparseIndex_;
+};
+
+}  // namespace datomsim::world

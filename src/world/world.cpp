@@ -1,0 +1,134 @@
+#include "world/world.h"
+
+#include <string>
+
+#include "geometry/lattice.h"
+
+namespace datomsim::world {
+
+using geometry::Cell;
+using geometry::toString;
+
+namespace {
+constexpr size_t kNotFound = SIZE_MAX;
+}
+
+World::World(Bounds bounds) : bounds_(bounds) {}
+
+size_t World::indexOf(ModuleId id) const {
+  const auto found = indexById_.find(id.value);
+  return found ? *found : kNotFound;
+}
+
+const Module* World::find(ModuleId id) const {
+  const size_t index = indexOf(id);
+  return index == kNotFound ? nullptr : &modules_[index];
+}
+
+Module* World::find(ModuleId id) {
+  const size_t index = indexOf(id);
+  return index == kNotFound ? nullptr : &modules_[index];
+}
+
+Status World::add(const Module& module) {
+  const std::string name = "module " + std::to_string(module.id.value);
+  if (module.id.value == 0) return Error{"module id 0 is reserved; ids start at 1"};
+  if (indexOf(module.id) != kNotFound) return Error{name + ": id already in use"};
+  if (!isPackable(module.cell)) {
+    return Error{name + ": cell " + toString(module.cell) + " is beyond +-1048576"};
+  }
+  if (!bounds_.contains(module.cell)) {
+    return Error{name + ": cell " + toString(module.cell) + " is outside the world" +
+                 (module.cell.z < 0 ? " (below the ground, z < 0)" : " (outside the grid)")};
+  }
+  if (const Module* other = moduleAt(module.cell)) {
+    return Error{name + ": cell " + toString(module.cell) + " is already occupied by module " +
+                 std::to_string(other->id.value)};
+  }
+  const auto index = static_cast<uint32_t>(modules_.size());
+  modules_.push_back(module);
+  occupancy_.insert(module.cell, index);
+  indexById_.insert(module.id.value, index);
+  maxId_ = std::max(maxId_, module.id.value);
+  return Ok{};
+}
+
+Status World::remove(ModuleId id) {
+  const size_t index = indexOf(id);
+  if (index == kNotFound) return Error{"no module " + std::to_string(id.value)};
+  for (int d = 0; d < geometry::kDirectionCount; ++d) {
+    if (neighbour(modules_[index], d)) setLatched(id, d, false);
+  }
+  occupancy_.erase(modules_[index].cell);
+  indexById_.erase(id.value);
+  // Swap-remove: the last module takes the freed slot.
+  const size_t last = modules_.size() - 1;
+  if (index != last) {
+    modules_[index] = modules_[last];
+    occupancy_.insert(modules_[index].cell, static_cast<uint32_t>(index));
+    indexById_.insert(modules_[index].id.value, static_cast<uint32_t>(index));
+  }
+  modules_.pop_back();
+  return Ok{};
+}
+
+Status World::move(ModuleId id, const Cell& to) {
+  const size_t index = indexOf(id);
+  if (index == kNotFound) return Error{"no module " + std::to_string(id.value)};
+  if (cellState(to) != CellState::kEmpty) {
+    return Error{"module " + std::to_string(id.value) + " cannot move to " + toString(to) +
+                 (isInside(to) ? ": cell is occupied" : ": cell is outside the world")};
+  }
+  occupancy_.erase(modules_[index].cell);
+  modules_[index].cell = to;
+  occupancy_.insert(to, static_cast<uint32_t>(index));
+  return Ok{};
+}
+
+const Module* World::neighbour(const Module& module, int direction) const {
+  return moduleAt(module.cell + geometry::neighbourOffset(direction));
+}
+
+void World::latchAllNeighbours() {
+  for (Module& module : modules_) {
+    module.latches = 0;
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      if (neighbour(module, d)) module.latches |= uint16_t(1u << module.orientation.ownConnector(d));
+    }
+  }
+}
+
+Status World::setLatched(ModuleId id, int direction, bool latched) {
+  Module* module = find(id);
+  if (!module) return Error{"no module " + std::to_string(id.value)};
+  const Module* other = neighbour(*module, direction);
+  if (!other) {
+    return Error{"module " + std::to_string(id.value) + " has no neighbour in direction " +
+                 std::to_string(direction)};
+  }
+  Module& facing = modules_[indexOf(other->id)];
+  const auto ownBit = uint16_t(1u << module->orientation.ownConnector(direction));
+  const auto facingBit =
+      uint16_t(1u << facing.orientation.ownConnector(geometry::oppositeDirection(direction)));
+  if (latched) {
+    module->latches |= ownBit;
+    facing.latches |= facingBit;
+  } else {
+    module->latches &= uint16_t(~ownBit);
+    facing.latches &= uint16_t(~facingBit);
+  }
+  return Ok{};
+}
+
+bool World::isLatched(const Module& module, int direction) const {
+  return (module.latches >> module.orientation.ownConnector(direction)) & 1u;
+}
+
+ModuleId World::nextFreeId() const { return ModuleId{maxId_ + 1}; }
+
+size_t World::memoryBytes() const {
+  return modules_.capacity() * sizeof(Module) + occupancy_.memoryBytes() +
+         indexById_.memoryBytes();
+}
+
+}  // namespace datomsim::world

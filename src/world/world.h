@@ -1,0 +1,90 @@
+// A world of Datoms in the FCC lattice: modules, who occupies which cell, bounds and latches.
+//
+// The World is the mutable state of a scene (the constant tables live in geometry/ and datom/).
+// Modules are stored contiguously; a module is named across layers by its ModuleId. Pointers and
+// references to modules stay valid until the next add or remove.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "common/result.h"
+#include "geometry/cell.h"
+#include "world/bounds.h"
+#include "world/cell_index.h"
+#include "world/module.h"
+#include "world/occupancy.h"
+
+namespace datomsim::world {
+
+// What a rule sees in a cell: nothing, a module, or a cell no module may enter.
+enum class CellState { kEmpty, kOccupied, kSolid };
+
+class World {
+ public:
+  explicit World(Bounds bounds = {});
+
+  const Bounds& bounds() const { return bounds_; }
+
+  // Adds a module. Refuses a duplicate id, an id of 0, an occupied cell or a cell outside the
+  // world, naming the id and cell. Latches are not changed (see latchAllNeighbours).
+  Status add(const Module& module);
+
+  // Removes a module and releases its latches (its neighbours' too).
+  Status remove(ModuleId id);
+
+  // Moves a module to an empty cell inside the world; latches are left to the caller.
+  Status move(ModuleId id, const geometry::Cell& to);
+
+  size_t size() const { return modules_.size(); }
+  std::span<const Module> modules() const { return modules_; }
+
+  const Module* find(ModuleId id) const;
+  Module* find(ModuleId id);
+
+  // The module in a cell, or nullptr. The hot path of rule evaluation.
+  const Module* moduleAt(const geometry::Cell& cell) const {
+    const uint32_t index = occupancy_.find(cell);
+    return index == Occupancy::kEmpty ? nullptr : &modules_[index];
+  }
+
+  bool isInside(const geometry::Cell& cell) const { return bounds_.contains(cell); }
+
+  CellState cellState(const geometry::Cell& cell) const {
+    if (!bounds_.contains(cell)) return CellState::kSolid;
+    return moduleAt(cell) ? CellState::kOccupied : CellState::kEmpty;
+  }
+
+  // The neighbour of a module in world direction d (0..11), or nullptr.
+  const Module* neighbour(const Module& module, int direction) const;
+
+  // Latches every pair of facing connectors between neighbouring modules: the rest state of a
+  // scene as VisibleSim and our files describe it.
+  void latchAllNeighbours();
+
+  // Latches or releases the connector pair between a module and its neighbour in world direction
+  // d. Refuses when there is no neighbour there.
+  Status setLatched(ModuleId id, int direction, bool latched);
+
+  // Whether the module's connector facing world direction d is latched.
+  bool isLatched(const Module& module, int direction) const;
+
+  // A fresh id: one more than the largest in use.
+  ModuleId nextFreeId() const;
+
+  // Bytes held by the module store and the occupancy index (for benchmarks).
+  size_t memoryBytes() const;
+
+ private:
+  size_t indexOf(ModuleId id) const;
+
+  Bounds bounds_;
+  std::vector<Module> modules_;
+  Occupancy occupancy_;
+  CellIndex indexById_;
+  uint32_t maxId_ = 0;
+};
+
+}  // namespace datomsim::world

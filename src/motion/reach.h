@@ -1,0 +1,67 @@
+// Where one mobile module can go: the gradient of the paper's section VII, and following it.
+//
+// The fixed world is every module but the mobile. Breadth first from the goal G: G gets 0, and
+// every cell reachable in one valid motion from a cell at distance d gets d + 1. By theorem 2
+// (bidirectionality) d is also the number of motions from that cell to G.
+#pragma once
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "common/result.h"
+#include "geometry/cell.h"
+#include "motion/motion.h"
+#include "motion/rule_table.h"
+#include "world/cell_index.h"
+#include "world/world.h"
+
+namespace datomsim::motion {
+
+class DistanceMap {
+ public:
+  DistanceMap(geometry::Cell goal, RuleOptions options) : goal_(goal), options_(options) {}
+
+  const geometry::Cell& goal() const { return goal_; }
+  const RuleOptions& options() const { return options_; }
+
+  // The distance of a cell, or nullopt when the mobile cannot reach the goal from it.
+  std::optional<int> distanceAt(const geometry::Cell& cell) const;
+
+  // Every reachable cell with its distance, sorted by x, then y, then z.
+  std::vector<std::pair<geometry::Cell, int>> sorted() const;
+
+  size_t size() const { return cells_.size(); }
+  int maxDistance() const { return maxDistance_; }
+  // How many rules were evaluated to build the map (for benchmarks).
+  uint64_t ruleEvaluations() const { return ruleEvaluations_; }
+
+ private:
+  friend Result<DistanceMap> reach(const world::World&, const RuleTable&, geometry::Cell,
+                                   const RuleOptions&);
+  geometry::Cell goal_;
+  RuleOptions options_;
+  world::CellIndex index_;                             // packed cell -> position in cells_
+  std::vector<std::pair<geometry::Cell, int>> cells_;  // in breadth-first order
+  int maxDistance_ = 0;
+  uint64_t ruleEvaluations_ = 0;
+};
+
+// The gradient from `goal` over the fixed world (which must not hold a module at the goal).
+// Refuses a goal that is occupied or outside the world.
+Result<DistanceMap> reach(const world::World& fixedWorld, const RuleTable& table,
+                          geometry::Cell goal, const RuleOptions& options);
+
+// Removes the module at `cell`, if any, so that it can be the mobile: the paper puts the mobile
+// at G to compute the gradient. Returns the removed module.
+std::optional<world::Module> takeMobile(world::World& world, const geometry::Cell& cell);
+
+// The path from `start` to the map's goal, following the gradient (paper, Algorithm 1): from each
+// cell, the valid motion whose destination has the smallest distance; ties go to the first rule
+// in table order (the mobile's direction from the pivot 0..11, then the two pistons of that
+// connector in increasing axis order,
+// then left, right, ahead). Refuses a start the map does not reach.
+Result<std::vector<Motion>> followGradient(const world::World& fixedWorld, const RuleTable& table,
+                                           const DistanceMap& distances, geometry::Cell start);
+
+}  // namespace datomsim::motion

@@ -1,0 +1,96 @@
+#include "motion/reach.h"
+
+#include <gtest/gtest.h>
+
+#include "motion/bidirectionality.h"
+#include "support/world_builder.h"
+
+namespace datomsim::motion {
+namespace {
+
+using geometry::Cell;
+using testing::WorldBuilder;
+
+const RuleTable& table() {
+  static const RuleTable kTable;
+  return kTable;
+}
+
+TEST(Reach, GoalHasDistanceZeroAndNeighboursOne) {
+  const world::World world = WorldBuilder().box({0, 0, 0}, {6, 6, 2}).build();
+  const auto map = reach(world, table(), {2, 2, 2}, {});
+  ASSERT_TRUE(map.ok()) << map.error();
+  EXPECT_EQ(map->distanceAt({2, 2, 2}), 0);
+  EXPECT_GT(map->size(), 1u);
+  // Every cell at distance d > 0 has a valid motion to a cell at distance d - 1.
+  for (const auto& [cell, distance] : map->sorted()) {
+    if (distance == 0) continue;
+    bool closer = false;
+    for (const Motion& m : validMotions(world, table(), {cell, std::nullopt}, {})) {
+      if (map->distanceAt(m.goal) == distance - 1) closer = true;
+    }
+    EXPECT_TRUE(closer) << geometry::toString(cell) << " at " << distance;
+  }
+}
+
+TEST(Reach, SortedDistancesAreOrderedByXThenYThenZ) {
+  const world::World world = WorldBuilder().box({0, 0, 0}, {4, 4, 2}).build();
+  const auto sorted = reach(world, table(), {1, 1, 2}, {})->sorted();
+  for (size_t i = 1; i < sorted.size(); ++i) EXPECT_LT(sorted[i - 1].first, sorted[i].first);
+}
+
+TEST(Reach, RefusesAnOccupiedOrSolidGoal) {
+  const world::World world = WorldBuilder().box({0, 0, 0}, {3, 3, 1}).build();
+  const auto occupied = reach(world, table(), {1, 1, 0}, {});
+  ASSERT_FALSE(occupied.ok());
+  EXPECT_NE(occupied.error().find("holds module"), std::string::npos);
+  EXPECT_FALSE(reach(world, table(), {1, 1, -1}, {}).ok());
+}
+
+TEST(Reach, FollowingTheGradientLowersTheDistanceByOneEachMotion) {
+  const world::World world = WorldBuilder().box({0, 0, 0}, {7, 7, 2}).build();
+  const auto map = reach(world, table(), {5, 4, 2}, {});
+  ASSERT_TRUE(map.ok());
+  const Cell start{0, 0, 2};
+  ASSERT_TRUE(map->distanceAt(start).has_value());
+  const auto path = followGradient(world, table(), *map, start);
+  ASSERT_TRUE(path.ok()) << path.error();
+  ASSERT_EQ(static_cast<int>(path->size()), *map->distanceAt(start));
+  Cell at = start;
+  for (const Motion& motion : *path) {
+    EXPECT_EQ(motion.from, at);
+    EXPECT_EQ(*map->distanceAt(motion.goal), *map->distanceAt(at) - 1);
+    at = motion.goal;
+  }
+  EXPECT_EQ(at, map->goal());
+}
+
+TEST(Reach, FollowGradientRefusesAnUnreachableStart) {
+  const world::World world = WorldBuilder().box({0, 0, 0}, {3, 3, 1}).build();
+  const auto map = reach(world, table(), {1, 1, 1}, {});
+  const auto path = followGradient(world, table(), *map, {50, 50, 50});
+  ASSERT_FALSE(path.ok());
+  EXPECT_NE(path.error().find("cannot reach"), std::string::npos);
+}
+
+TEST(Reach, TakeMobileRemovesTheModuleAtTheGoal) {
+  world::World world = WorldBuilder().box({0, 0, 0}, {3, 3, 1}).module({1, 1, 1}).build();
+  const auto mobile = takeMobile(world, {1, 1, 1});
+  ASSERT_TRUE(mobile.has_value());
+  EXPECT_EQ(world.moduleAt({1, 1, 1}), nullptr);
+  EXPECT_FALSE(takeMobile(world, {2, 2, 2}).has_value());
+}
+
+TEST(Bidirectionality, HoldsOnABoxForEveryOptionSet) {
+  const world::World world = WorldBuilder().box({0, 0, 0}, {4, 4, 2}).module({1, 1, 2}).build();
+  for (const RuleSet rules : {RuleSet::kPaper, RuleSet::kStrict}) {
+    for (const bool attachment : {true, false}) {
+      const auto report = checkBidirectionality(world, table(), {rules, attachment});
+      EXPECT_GT(report.motionsChecked, 0u);
+      EXPECT_TRUE(report.counterexamples.empty());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace datomsim::motion

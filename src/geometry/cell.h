@@ -27,6 +27,13 @@ struct Cell {
 // "x,y,z", the form the command line and VisibleSim's XML use.
 std::string toString(const Cell& cell);
 
+// Test frameworks and logs print cells as (x,y,z).
+template <typename Stream>
+Stream& operator<<(Stream& out, const Cell& cell) {
+  out << '(' << cell.x << ',' << cell.y << ',' << cell.z << ')';
+  return out;
+}
+
 // Floor division by 2 for any sign: the skew lattice shifts a layer by floor(z/2) cells.
 constexpr int32_t floorHalf(int32_t v) { return v >= 0 ? v / 2 : -((-v + 1) / 2); }
 

@@ -110,7 +110,7 @@ bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mo
                                                  : RefusalReason::kCellOutsideWorld,
                     nullptr);
     }
-    const Module* module = world.moduleAt(cell);
+    const Module* module = fixedModuleAt(world, cell, mobile);
     if (!module) continue;
     if (need.role == CellRole::kGoal) {
       return refuse(need.role, cell, RefusalReason::kGoalOccupied, module);
@@ -133,6 +133,13 @@ bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mo
   return true;
 }
 
+// The mobile's module when it really is at the mobile's cell, else nullptr.
+const Module* realMobile(const World& world, const Mobile& mobile) {
+  if (!mobile.module) return nullptr;
+  const Module* self = world.find(*mobile.module);
+  return self && self->cell == mobile.cell ? self : nullptr;
+}
+
 }  // namespace
 
 Evaluation evaluate(const World& world, const Rule& rule, const Mobile& mobile,
@@ -141,9 +148,8 @@ Evaluation evaluate(const World& world, const Rule& rule, const Mobile& mobile,
   const Module* pivot = world.moduleAt(pivotCell);
   Refusal refusal;
   refusal.pivot = pivot->id;
-  if (mobile.module) {
-    const Module* self = world.find(*mobile.module);
-    if (!self || !world.isLatched(*self, geometry::oppositeDirection(rule.mobileDirection))) {
+  if (const Module* self = realMobile(world, mobile)) {
+    if (!world.isLatched(*self, geometry::oppositeDirection(rule.mobileDirection))) {
       refusal.rule = &rule;
       refusal.cell = pivotCell;
       refusal.reason = RefusalReason::kMobileNotLatched;
@@ -163,11 +169,8 @@ Evaluation evaluate(const World& world, const Rule& rule, const Mobile& mobile,
 }
 
 bool holds(const World& world, const Rule& rule, const Mobile& mobile, const RuleOptions& options) {
-  if (mobile.module) {
-    const Module* self = world.find(*mobile.module);
-    if (!self || !world.isLatched(*self, geometry::oppositeDirection(rule.mobileDirection))) {
-      return false;
-    }
+  if (const Module* self = realMobile(world, mobile)) {
+    if (!world.isLatched(*self, geometry::oppositeDirection(rule.mobileDirection))) return false;
   }
   return check(world, rule, mobile.cell - rule.mobileOffset, mobile, options, nullptr, nullptr);
 }
@@ -177,7 +180,7 @@ std::vector<Evaluation> evaluateAll(const World& world, const RuleTable& table,
   std::vector<Evaluation> out;
   for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
     const Rule* rules = table.rulesForMobileDirection(direction);
-    if (!world.moduleAt(mobile.cell - rules[0].mobileOffset)) continue;
+    if (!fixedModuleAt(world, mobile.cell - rules[0].mobileOffset, mobile)) continue;
     for (int i = 0; i < RuleTable::kRulesPerNeighbour; ++i) {
       out.push_back(evaluate(world, rules[i], mobile, options));
     }

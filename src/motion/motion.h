@@ -80,16 +80,28 @@ std::string describe(const Refusal& refusal);
 
 using Evaluation = std::variant<Motion, Refusal>;
 
-// Where the mobile is. When `module` is set, it is in the world at `cell` and must be latched to
-// the pivot; it is never counted as a neighbour holding a deforming module. When unset, the cell
-// is empty and the mobile is imagined there, latched to every neighbour.
+// Where the mobile is, and which module it is.
+//   - `module` unset: the mobile is imagined at `cell` (an empty cell), latched to every
+//     neighbour; every module of the world is fixed.
+//   - `module` set and in the world at `cell`: the real mobile; it must be latched to the pivot.
+//   - `module` set but elsewhere: the mobile is imagined at `cell`, and the module is treated as
+//     absent (its cell counts as empty): it is not part of the fixed world (paper, section VII).
+// In every case the mobile never counts as a hold for a deforming module.
 struct Mobile {
   geometry::Cell cell;
   std::optional<world::ModuleId> module;
 };
 
+// The module at `cell` as the rules see it: nullptr when empty or when it is the mobile.
+inline const world::Module* fixedModuleAt(const world::World& world, const geometry::Cell& cell,
+                                          const Mobile& mobile) {
+  const world::Module* module = world.moduleAt(cell);
+  if (module && mobile.module && module->id == *mobile.module) return nullptr;
+  return module;
+}
+
 // Evaluates one rule for a mobile and a pivot at `mobile.cell - rule.mobileOffset`. Precondition:
-// the pivot cell holds a module.
+// the pivot cell holds a fixed module (fixedModuleAt).
 Evaluation evaluate(const world::World& world, const Rule& rule, const Mobile& mobile,
                     const RuleOptions& options);
 

@@ -15,25 +15,31 @@ constexpr size_t kNotFound = SIZE_MAX;
 
 World::World(Bounds bounds) : bounds_(bounds) {}
 
-size_t World::indexOf(ModuleId id) const {
+size_t World::slotOf(ModuleId id) const {
   const auto found = indexById_.find(id.value);
   return found ? *found : kNotFound;
 }
 
+std::optional<uint32_t> World::indexOf(ModuleId id) const {
+  const size_t slot = slotOf(id);
+  if (slot == kNotFound) return std::nullopt;
+  return static_cast<uint32_t>(slot);
+}
+
 const Module* World::find(ModuleId id) const {
-  const size_t index = indexOf(id);
+  const size_t index = slotOf(id);
   return index == kNotFound ? nullptr : &modules_[index];
 }
 
 Module* World::find(ModuleId id) {
-  const size_t index = indexOf(id);
+  const size_t index = slotOf(id);
   return index == kNotFound ? nullptr : &modules_[index];
 }
 
 Status World::add(const Module& module) {
   const std::string name = "module " + std::to_string(module.id.value);
   if (module.id.value == 0) return Error{"module id 0 is reserved; ids start at 1"};
-  if (indexOf(module.id) != kNotFound) return Error{name + ": id already in use"};
+  if (slotOf(module.id) != kNotFound) return Error{name + ": id already in use"};
   if (!isPackable(module.cell)) {
     return Error{name + ": cell " + toString(module.cell) + " is beyond +-1048576"};
   }
@@ -54,7 +60,7 @@ Status World::add(const Module& module) {
 }
 
 Status World::remove(ModuleId id) {
-  const size_t index = indexOf(id);
+  const size_t index = slotOf(id);
   if (index == kNotFound) return Error{"no module " + std::to_string(id.value)};
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     if (neighbour(modules_[index], d)) setLatched(id, d, false);
@@ -73,7 +79,7 @@ Status World::remove(ModuleId id) {
 }
 
 Status World::move(ModuleId id, const Cell& to) {
-  const size_t index = indexOf(id);
+  const size_t index = slotOf(id);
   if (index == kNotFound) return Error{"no module " + std::to_string(id.value)};
   if (cellState(to) != CellState::kEmpty) {
     return Error{"module " + std::to_string(id.value) + " cannot move to " + toString(to) +
@@ -106,7 +112,7 @@ Status World::setLatched(ModuleId id, int direction, bool latched) {
     return Error{"module " + std::to_string(id.value) + " has no neighbour in direction " +
                  std::to_string(direction)};
   }
-  Module& facing = modules_[indexOf(other->id)];
+  Module& facing = modules_[slotOf(other->id)];
   const auto ownBit = uint16_t(1u << module->orientation.ownConnector(direction));
   const auto facingBit =
       uint16_t(1u << facing.orientation.ownConnector(geometry::oppositeDirection(direction)));

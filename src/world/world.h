@@ -44,6 +44,10 @@ class World {
   const Module* find(ModuleId id) const;
   Module* find(ModuleId id);
 
+  // The position of a module in modules(); stable until a module is removed.
+  std::optional<uint32_t> indexOf(ModuleId id) const;
+  Module& moduleAtIndex(uint32_t index) { return modules_[index]; }
+
   // The module in a cell, or nullptr. The hot path of rule evaluation.
   const Module* moduleAt(const geometry::Cell& cell) const {
     const uint32_t index = occupancy_.find(cell);
@@ -78,7 +82,7 @@ class World {
   size_t memoryBytes() const;
 
  private:
-  size_t indexOf(ModuleId id) const;
+  size_t slotOf(ModuleId id) const;
 
   Bounds bounds_;
   std::vector<Module> modules_;

@@ -1,0 +1,46 @@
+// The subcommands of `datomsim`, and what they share: turning errors into messages and writing
+// outputs whole or not at all.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "arguments.h"
+#include "common/result.h"
+#include "geometry/cell.h"
+#include "motion/reach.h"
+#include "world/world.h"
+
+namespace datomsim::app {
+
+void addGeometryCommand(CLI::App& app);
+void addSceneCommands(CLI::App& app);   // generate, convert, info
+void addMotionCommands(CLI::App& app);  // reach, moves, verify
+void addDemoCommand(CLI::App& app);
+
+// A check that ran and found a problem (e.g. counterexamples); exit status 1.
+class CheckFailed : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The value of a result, or a UsageError carrying its message.
+template <typename T>
+T unwrap(Result<T>&& result) {
+  if (!result.ok()) throw UsageError(result.error());
+  return std::move(result).value();
+}
+void check(const Status& status);
+
+// Writes text to a file atomically, or to standard output when the path is empty.
+void writeOutput(const std::string& path, const std::string& text);
+
+// The distance map pictures, for each path that is not empty.
+void writePictures(const world::World& world, const motion::DistanceMap& map,
+                   const std::vector<geometry::Cell>& path, const std::string& title,
+                   const std::string& png, const std::string& svg);
+
+}  // namespace datomsim::app

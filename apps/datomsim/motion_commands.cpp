@@ -1,0 +1,154 @@
+// `reach`, `moves` and `verify`: the motion rules from the command line.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+
+#include "arguments.h"
+#include "commands.h"
+#include "io/scene_file.h"
+#include "motion/bidirectionality.h"
+#include "motion/reach.h"
+#include "motion_json.h"
+#include "render/distance_map.h"
+
+namespace datomsim::app {
+namespace {
+
+struct RuleArguments {
+  std::string rules = "paper";
+  std::string attachment = "on";
+
+  void addTo(CLI::App& command) {
+    command.add_option("--rules", rules, "Rule table: paper (double deformation) or strict")
+        ->check(CLI::IsMember({"paper", "strict"}))
+        ->capture_default_str();
+    command.add_option("--attachment", attachment,
+                       "Refuse deformations that would make a module let go: on or off")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
+  }
+  motion::RuleOptions options() const { return parseRuleOptions(rules, attachment); }
+};
+
+std::string ruleLabel(const motion::RuleOptions& options) {
+  return fmt::format("rules {}, attachment {}", motion::toString(options.rules),
+                     options.attachment ? "on" : "off");
+}
+
+void addReach(CLI::App& app) {
+  struct Arguments {
+    std::string scene, goal, start, out, png, svg;
+    RuleArguments rules;
+  };
+  auto args = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand(
+      "reach", "Distances in motions from every reachable cell to a goal (paper, section VII)");
+  command->add_option("scene", args->scene, "Scene file (.xml or .json)")->required();
+  command->add_option("--goal", args->goal, "Goal cell x,y,z; a module there is the mobile")
+      ->required();
+  command->add_option("--start", args->start,
+                      "Also follow the gradient from this cell and draw the path");
+  args->rules.addTo(*command);
+  command->add_option("--out", args->out, "Write the JSON here instead of standard output");
+  command->add_option("--png", args->png, "Write the distance map as a PNG picture");
+  command->add_option("--svg", args->svg, "Write the distance map as an SVG picture");
+  command->callback([args] {
+    const geometry::Cell goal = parseCell("--goal", args->goal);
+    const motion::RuleOptions options = args->rules.options();
+    io::Scene scene = unwrap(io::readScene(args->scene));
+    motion::takeMobile(scene.world, goal);
+    const motion::RuleTable table;
+    const motion::DistanceMap map = unwrap(motion::reach(scene.world, table, goal, options));
+
+    std::vector<geometry::Cell> path;
+    if (!args->start.empty()) {
+      const geometry::Cell start = parseCell("--start", args->start);
+      path.push_back(start);
+      for (const motion::Motion& m : unwrap(motion::followGradient(scene.world, table, map, start))) {
+        path.push_back(m.goal);
+      }
+    }
+    const std::string title = fmt::format("{}: distances to {} ({})", args->scene,
+                                          geometry::toString(goal), ruleLabel(options));
+    writePictures(scene.world, map, path, title, args->png, args->svg);
+    writeOutput(args->out, reachJson(map, path));
+  });
+}
+
+void addMoves(CLI::App& app) {
+  struct Arguments {
+    std::string scene, at, out;
+    RuleArguments rules;
+  };
+  auto args = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand(
+      "moves", "Every rule of every pivot around a cell, valid or refused with its reason");
+  command->add_option("scene", args->scene, "Scene file (.xml or .json)")->required();
+  command->add_option("--at", args->at, "The mobile's cell x,y,z; a module there is the mobile")
+      ->required();
+  args->rules.addTo(*command);
+  command->add_option("--out", args->out, "Write the JSON here instead of standard output");
+  command->callback([args] {
+    const geometry::Cell at = parseCell("--at", args->at);
+    const io::Scene scene = unwrap(io::readScene(args->scene));
+    if (!scene.world.isInside(at)) {
+      throw UsageError("--at " + geometry::toString(at) + " is outside the world");
+    }
+    const world::Module* mobile = scene.world.moduleAt(at);
+    const motion::Mobile where{at, mobile ? std::optional(mobile->id) : std::nullopt};
+    const motion::RuleTable table;
+    writeOutput(args->out, movesJson(at, motion::evaluateAll(scene.world, table, where,
+                                                             args->rules.options())));
+  });
+}
+
+void addVerify(CLI::App& app) {
+  struct Arguments {
+    std::string scene;
+    std::vector<std::string> rules = {"paper", "strict"};
+    std::vector<std::string> attachment = {"on", "off"};
+  };
+  auto args = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand(
+      "verify",
+      "Check theorem 2 (bidirectionality) on a scene: every module fixed, the mobile imagined at "
+      "every free cell next to them; exits 1 if a counterexample is found");
+  command->add_option("scene", args->scene, "Scene file (.xml or .json)")->required();
+  command->add_option("--rules", args->rules, "Rule tables to check")
+      ->check(CLI::IsMember({"paper", "strict"}))
+      ->capture_default_str();
+  command->add_option("--attachment", args->attachment, "Attachment settings to check")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  command->callback([args] {
+    const io::Scene scene = unwrap(io::readScene(args->scene));
+    const motion::RuleTable table;
+    size_t failures = 0;
+    for (const std::string& rules : args->rules) {
+      for (const std::string& attachment : args->attachment) {
+        const motion::RuleOptions options = parseRuleOptions(rules, attachment);
+        const auto report = motion::checkBidirectionality(scene.world, table, options);
+        fmt::print("{}: {} cells, {} motions, {} counterexamples\n", ruleLabel(options),
+                   report.cellsChecked, report.motionsChecked, report.counterexamples.size());
+        for (const auto& counterexample : report.counterexamples) {
+          const motion::Motion& m = counterexample.forward;
+          fmt::print("  {} -> {} (turn {} about pivot {} with piston {}) has no way back\n",
+                     geometry::toString(m.from), geometry::toString(m.goal),
+                     motion::toString(m.rule->turn), m.pivot.value, m.rule->up);
+        }
+        failures += report.counterexamples.size();
+      }
+    }
+    if (failures > 0) throw CheckFailed(fmt::format("{} counterexamples to theorem 2", failures));
+  });
+}
+
+}  // namespace
+
+void addMotionCommands(CLI::App& app) {
+  addReach(app);
+  addMoves(app);
+  addVerify(app);
+}
+
+}  // namespace datomsim::app

@@ -1,0 +1,23 @@
+// The JSON documents of `reach` and `moves`: the command-line contract other tools read.
+//
+//   reach: {"goal":[x,y,z],"rules":"paper","attachment":"on","distances":[[x,y,z,d],...]}
+//          (distances sorted by x, then y, then z; "path":[[x,y,z],...] when a start is given)
+//   moves: {"at":[x,y,z],"moves":[{"pivot":[x,y,z],"piston":P,"turn":"left","goal":[x,y,z],
+//          "valid":true,"refusal":null,"deformations":[{"cell":[x,y,z],"pistons":[P,Q]}]}]}
+// Pistons are world axes (DOMAIN section 2). See docs/file-formats.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/cell.h"
+#include "motion/motion.h"
+#include "motion/reach.h"
+
+namespace datomsim::app {
+
+std::string reachJson(const motion::DistanceMap& map, const std::vector<geometry::Cell>& path);
+
+std::string movesJson(const geometry::Cell& at, const std::vector<motion::Evaluation>& moves);
+
+}  // namespace datomsim::app

@@ -1,0 +1,163 @@
+#include "algorithms/follow_gradient.h"
+
+#include "geometry/lattice.h"
+
+namespace datomsim::algorithms {
+
+using geometry::Cell;
+using program::Message;
+
+void FollowGradientProgram::onTimer(program::ModuleContext& context, int tag) {
+  if (tag != kFollowTrigger || !isMobile(context) || phase_ != Phase::kIdle) return;
+  path_ = {context.cell()};
+  step(context);
+}
+
+// Algorithm 1, followGradient(): list the valid rules and ask their pivots for distances.
+void FollowGradientProgram::step(program::ModuleContext& context) {
+  if (context.cell() == parameters().goal) {
+    arrived_ = true;
+    phase_ = Phase::kDone;
+    return;
+  }
+  candidates_.clear();
+  for (motion::Evaluation& evaluation : context.motions()) {
+    if (auto* motion = std::get_if<motion::Motion>(&evaluation)) {
+      candidates_.push_back(std::move(*motion));
+    }
+  }
+  if (candidates_.empty()) return fail("no valid motion from " + toString(context.cell()));
+  candidateDistances_.assign(candidates_.size(), kUnknown);
+  waitingReplies_ = static_cast<int>(candidates_.size());
+  phase_ = Phase::kAsking;
+  for (size_t i = 0; i < candidates_.size(); ++i) {
+    const auto direction = geometry::directionOfOffset(candidates_[i].pivotCell - context.cell());
+    const int connector = context.orientation().ownConnector(*direction);
+    const Status sent = context.send(
+        connector, Message::of(DistanceQuery{candidates_[i].goal, static_cast<int32_t>(i)}));
+    if (!sent.ok()) return fail(sent.error());
+  }
+}
+
+// Smallest distance first; ties to the first rule in table order (candidates_ keeps it).
+void FollowGradientProgram::choose(program::ModuleContext& context) {
+  size_t best = 0;
+  for (size_t i = 1; i < candidates_.size(); ++i) {
+    if (candidateDistances_[i] < candidateDistances_[best]) best = i;
+  }
+  if (candidateDistances_[best] == kUnknown) {
+    return fail("no pivot knows a distance for the goals around " + toString(context.cell()));
+  }
+  chosen_ = candidates_[best];
+  phase_ = Phase::kDeforming;
+  waitingAcks_ = sendToBlockingModules<DeformMsg>(context);
+  if (waitingAcks_ == 0) {
+    phase_ = Phase::kMoving;
+    const Status moving = context.move(*chosen_);
+    if (!moving.ok()) fail(moving.error());
+  }
+}
+
+template <typename T>
+int FollowGradientProgram::sendToBlockingModules(program::ModuleContext& context) {
+  int sent = 0;
+  for (const motion::Deformation& d : chosen_->deformations) {
+    T message;
+    message.target = d.cell;
+    message.origin = context.cell();
+    message.request = nextRequest_++;
+    message.axis = d.firstAxis;
+    router_.send(context, message);
+    ++sent;
+  }
+  return sent;
+}
+
+void FollowGradientProgram::onMotionDone(program::ModuleContext& context) {
+  path_.push_back(context.cell());
+  phase_ = Phase::kReleasing;
+  waitingAcks_ = sendToBlockingModules<ReleaseMsg>(context);
+  if (waitingAcks_ == 0) step(context);
+}
+
+void FollowGradientProgram::onMessage(program::ModuleContext& context, int ownConnector,
+                                      const Message& message) {
+  // A pivot answers the mobile's question from what it stores.
+  if (const auto* query = message.as<DistanceQuery>()) {
+    context.send(ownConnector, Message::of(DistanceReply{query->cell, query->candidate,
+                                                         distanceOf(context, query->cell)}));
+    return;
+  }
+  if (const auto* reply = message.as<DistanceReply>()) {
+    if (phase_ != Phase::kAsking || reply->candidate < 0 ||
+        reply->candidate >= int32_t(candidates_.size())) {
+      return;
+    }
+    candidateDistances_[reply->candidate] = reply->distance;
+    if (--waitingReplies_ == 0) choose(context);
+    return;
+  }
+  // Routed messages: handled at the target cell, forwarded elsewhere.
+  auto routed = [&](const auto* typed, std::string_view type) {
+    if (!typed) return false;
+    if (typed->target == context.cell()) {
+      handleRouted(context, *typed, type);
+    } else {
+      router_.send(context, *typed, ownConnector);
+    }
+    return true;
+  };
+  if (routed(message.as<DeformMsg>(), DeformMsg::kName) ||
+      routed(message.as<ReleaseMsg>(), ReleaseMsg::kName) ||
+      routed(message.as<AckDeform>(), AckDeform::kName) ||
+      routed(message.as<AckRelease>(), AckRelease::kName)) {
+    return;
+  }
+  GradientProgram::onMessage(context, ownConnector, message);
+}
+
+void FollowGradientProgram::handleRouted(program::ModuleContext& context, const RoutedMsg& routed,
+                                         std::string_view type) {
+  if (type == DeformMsg::kName) {
+    // Paper, Algorithm 1, DeformMsg handler: compress, answer when done.
+    pending_ = routed;
+    releasing_ = false;
+    const Status status = context.compress(context.orientation().ownPiston(routed.axis));
+    if (!status.ok()) fail(status.error());
+  } else if (type == ReleaseMsg::kName) {
+    pending_ = routed;
+    releasing_ = true;
+    const Status status = context.release();
+    if (!status.ok()) fail(status.error());
+  } else if (type == AckDeform::kName && phase_ == Phase::kDeforming) {
+    // Algorithm 1, AckDeform handler: move once every blocking module has answered.
+    if (--waitingAcks_ == 0) {
+      phase_ = Phase::kMoving;
+      const Status moving = context.move(*chosen_);
+      if (!moving.ok()) fail(moving.error());
+    }
+  } else if (type == AckRelease::kName && phase_ == Phase::kReleasing) {
+    if (--waitingAcks_ == 0) step(context);
+  }
+}
+
+void FollowGradientProgram::onDeformationDone(program::ModuleContext& context) {
+  if (!pending_) return;
+  RoutedMsg answer;
+  answer.target = pending_->origin;
+  answer.origin = context.cell();
+  answer.request = pending_->request;
+  if (releasing_) {
+    router_.send(context, AckRelease{answer});
+  } else {
+    router_.send(context, AckDeform{answer});
+  }
+  pending_.reset();
+}
+
+void FollowGradientProgram::fail(const std::string& why) {
+  phase_ = Phase::kDone;
+  if (!failure_) failure_ = why;
+}
+
+}  // namespace datomsim::algorithms

@@ -1,0 +1,86 @@
+// Follow gradient (paper, Algorithm 1), after the distributed gradient, as a module program.
+//
+// Every module first runs the gradient (gradient.h). When the run's driver triggers the mobile
+// (tag kFollowTrigger, once the gradient has settled), the mobile repeats until it reaches G:
+//   1. list its valid rules (getAllValidRules) and ask each rule's pivot, a latched neighbour,
+//      for the distance of the rule's goal (DistanceQuery / DistanceReply);
+//   2. pick the goal of smallest distance, ties to the first rule in table order;
+//   3. send DeformMsg(piston) to every module of the rule's deformation list and wait for every
+//      AckDeform;
+//   4. move; when the motion ends, send ReleaseMsg to the same modules and wait for every
+//      AckRelease.
+// Deformation messages travel hop by hop between latched neighbours (routing.h).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "algorithms/gradient.h"
+#include "motion/motion.h"
+
+namespace datomsim::algorithms {
+
+// The mobile asks a pivot for the distance it stores for a cell; `candidate` is echoed back.
+struct DistanceQuery {
+  static constexpr std::string_view kName = "DistanceQuery";
+  geometry::Cell cell;
+  int32_t candidate;
+};
+
+struct DistanceReply {
+  static constexpr std::string_view kName = "DistanceReply";
+  geometry::Cell cell;
+  int32_t candidate;
+  int32_t distance;
+};
+
+class FollowGradientProgram : public GradientProgram {
+ public:
+  static constexpr int kFollowTrigger = 1;
+
+  explicit FollowGradientProgram(const GradientParameters& parameters)
+      : GradientProgram(parameters) {}
+
+  void onMessage(program::ModuleContext& context, int ownConnector,
+                 const program::Message& message) override;
+  void onTimer(program::ModuleContext& context, int tag) override;
+  void onDeformationDone(program::ModuleContext& context) override;
+  void onMotionDone(program::ModuleContext& context) override;
+
+  // The mobile's cells, start first; and whether it reached G.
+  const std::vector<geometry::Cell>& path() const { return path_; }
+  bool arrived() const { return arrived_; }
+  const std::optional<std::string>& failure() const { return failure_; }
+
+ private:
+  // The mobile's side.
+  void step(program::ModuleContext& context);
+  void choose(program::ModuleContext& context);
+  void fail(const std::string& why);
+  // Sends one routed message per module of the chosen rule's deformation list.
+  template <typename T>
+  int sendToBlockingModules(program::ModuleContext& context);
+
+  // A blocking module's side.
+  void handleRouted(program::ModuleContext& context, const RoutedMsg& routed,
+                    std::string_view type);
+
+  enum class Phase { kIdle, kAsking, kDeforming, kMoving, kReleasing, kDone };
+
+  // Mobile state.
+  Phase phase_ = Phase::kIdle;
+  std::vector<motion::Motion> candidates_;
+  std::vector<int32_t> candidateDistances_;
+  int waitingReplies_ = 0;
+  std::optional<motion::Motion> chosen_;
+  int waitingAcks_ = 0;
+  uint32_t nextRequest_ = 1;
+  std::vector<geometry::Cell> path_;
+  bool arrived_ = false;
+  std::optional<std::string> failure_;
+  // Blocking module state: who asked, to answer once the piston is done.
+  std::optional<RoutedMsg> pending_;
+  bool releasing_ = false;
+};
+
+}  // namespace datomsim::algorithms

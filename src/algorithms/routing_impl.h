@@ -1,0 +1,62 @@
+// Template part of routing.h.
+#pragma once
+
+#include "geometry/lattice.h"
+
+namespace datomsim::algorithms {
+
+inline double squaredDistance(const geometry::Cell& a, const geometry::Cell& b) {
+  const geometry::Vec3 d = geometry::worldOffset(a - b, 1.0);
+  return geometry::dot(d, d);
+}
+
+inline bool Router::seen(const RoutedMsg& routed) {
+  for (const RoutedMsg& r : recent_) {
+    if (r.request == routed.request && r.origin == routed.origin && r.target == routed.target) {
+      return true;
+    }
+  }
+  recent_[nextRecent_] = routed;
+  nextRecent_ = (nextRecent_ + 1) % int(recent_.size());
+  return false;
+}
+
+template <typename Send>
+void Router::forward(program::ModuleContext& context, const RoutedMsg& routed,
+                     int arrivedThrough, Send&& sendThrough) {
+  const uint16_t latched = context.latchedConnectors();
+  const double own = squaredDistance(context.cell(), routed.target);
+  if (!routed.flooding) {
+    // Greedy: the latched neighbour nearest to the target, if nearer than this module.
+    int best = -1;
+    double bestDistance = own;
+    for (int connector = 0; connector < geometry::kDirectionCount; ++connector) {
+      if (!(latched & (1u << connector))) continue;
+      const double d = squaredDistance(context.cellBehind(connector), routed.target);
+      if (d < bestDistance - 1e-9) {
+        bestDistance = d;
+        best = connector;
+      }
+    }
+    if (best >= 0) {
+      sendThrough(best, routed);
+      return;
+    }
+  }
+  // No neighbour is nearer: flood, each module forwarding once, within the hop limit.
+  RoutedMsg next = routed;
+  if (!next.flooding) {
+    next.flooding = true;
+    next.hopsLeft = kFloodHops;
+  }
+  if (routed.flooding && seen(routed)) return;
+  if (!routed.flooding) seen(next);
+  if (next.hopsLeft <= 0) return;
+  --next.hopsLeft;
+  for (int connector = 0; connector < geometry::kDirectionCount; ++connector) {
+    if (connector == arrivedThrough || !(latched & (1u << connector))) continue;
+    sendThrough(connector, next);
+  }
+}
+
+}  // namespace datomsim::algorithms

@@ -1,0 +1,48 @@
+// Running a module program on a scene, as `datomsim run` and `datomsim demo` do.
+//
+// The mobile is the module at the start cell if any; else the module at the goal, moved to the
+// start first (as in the paper's experiment); else a new module. All modules run the program.
+// For follow-gradient, the gradient runs until no event remains, then the mobile is triggered
+// and follows it to the goal.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "common/result.h"
+#include "geometry/cell.h"
+#include "motion/motion.h"
+#include "sim/simulator.h"
+#include "sim/statistics.h"
+#include "world/world.h"
+
+namespace datomsim::experiment {
+
+struct RunRequest {
+  std::string program = "gradient";
+  geometry::Cell goal;
+  std::optional<geometry::Cell> start;
+  sim::SimulationOptions simulation;
+  bool trace = false;
+  std::string description;
+};
+
+struct RunResult {
+  world::ModuleId mobile;
+  // gradient: every reachable cell and its distance, sorted by x, then y, then z.
+  std::vector<std::pair<geometry::Cell, int>> distances;
+  // follow-gradient: the mobile's cells from start to goal.
+  std::vector<geometry::Cell> path;
+  sim::Statistics statistics;
+  std::string trace;  // JSON Lines, when asked for
+};
+
+// Refuses a goal or start outside the world, an unknown program, follow-gradient without a
+// start, a run stopped by an invariant (the violation's report) and a mobile that fails to
+// arrive.
+Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
+                             const RunRequest& request);
+
+}  // namespace datomsim::experiment

@@ -1,0 +1,26 @@
+// Reading and writing scene files, whatever their format: the entry point for the command line.
+//
+// The format follows the file's extension: .xml is VisibleSim's XML (visiblesim_xml.h), .json the
+// project's versioned JSON (json_scene.h). Writing is atomic (atomic_file.h): a failed write
+// leaves no file behind and an existing file untouched.
+#pragma once
+
+#include <filesystem>
+
+#include "common/result.h"
+#include "io/scene.h"
+
+namespace datomsim::io {
+
+enum class SceneFormat { kVisibleSimXml, kJson };
+
+// The format of a path by its extension (case-insensitive), or an error naming the extension.
+Result<SceneFormat> sceneFormatOf(const std::filesystem::path& path);
+
+// Reads a scene file; errors name the path as given.
+Result<Scene> readScene(const std::filesystem::path& path);
+
+// Writes a scene file in the format of its extension, atomically.
+Status writeScene(const Scene& scene, const std::filesystem::path& path);
+
+}  // namespace datomsim::io

@@ -1,0 +1,413 @@
+#include "io/visiblesim_xml.h"
+
+#include <fmt/format.h>
+#include <tinyxml2.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "io/number_text.h"
+
+namespace datomsim::io {
+
+using geometry::Cell;
+using tinyxml2::XMLDocument;
+using tinyxml2::XMLElement;
+using tinyxml2::XMLError;
+
+namespace {
+
+constexpr world::Color kDefaultColor{128, 128, 128};
+
+// Attribute texts -> values. Each returns nullopt when the text breaks the rule the caller names.
+
+std::optional<Cell> parseCell(const char* text) {
+  const auto values = parseIntegerList(text);
+  if (!values || values->size() != 3) return std::nullopt;
+  for (const int64_t v : *values) {
+    if (v < std::numeric_limits<int32_t>::min() || v > std::numeric_limits<int32_t>::max()) {
+      return std::nullopt;
+    }
+  }
+  return Cell{int32_t((*values)[0]), int32_t((*values)[1]), int32_t((*values)[2])};
+}
+
+std::optional<Cell> parseGridSize(const char* text) {
+  const auto cell = parseCell(text);
+  if (!cell || cell->x <= 0 || cell->y <= 0 || cell->z <= 0) return std::nullopt;
+  return cell;
+}
+
+std::optional<world::Color> parseColor(const char* text) {
+  const auto values = parseIntegerList(text);
+  if (!values || values->size() != 3) return std::nullopt;
+  for (const int64_t v : *values) {
+    if (v < 0 || v > 255) return std::nullopt;
+  }
+  return world::Color{uint8_t((*values)[0]), uint8_t((*values)[1]), uint8_t((*values)[2])};
+}
+
+std::optional<geometry::Orientation> parseOrientation(const char* text) {
+  const auto values = parseIntegerList(text);
+  if (!values || values->size() != 1) return std::nullopt;
+  const int64_t code = values->front();
+  if (code < 0 || code >= geometry::Orientation::kCount) return std::nullopt;
+  return geometry::Orientation::fromCode(int(code));
+}
+
+std::optional<uint32_t> parseId(const char* text) {
+  const auto values = parseIntegerList(text);
+  if (!values || values->size() != 1) return std::nullopt;
+  const int64_t id = values->front();
+  if (id < 1 || id > int64_t{std::numeric_limits<uint32_t>::max()}) return std::nullopt;
+  return uint32_t(id);
+}
+
+std::optional<std::array<double, 3>> parseBlockSize(const char* text) {
+  const auto values = parseNumberList(text);
+  if (!values || values->size() != 3) return std::nullopt;
+  for (const double v : *values) {
+    if (!(v > 0)) return std::nullopt;
+  }
+  return std::array<double, 3>{(*values)[0], (*values)[1], (*values)[2]};
+}
+
+// A readable phrase for tinyxml2's error codes; its own names are kept in parentheses.
+const char* describeXmlError(XMLError error) {
+  switch (error) {
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT:
+      return "cannot parse an element (unclosed quote or tag?)";
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
+      return "cannot parse an attribute";
+    case tinyxml2::XML_ERROR_PARSING_TEXT:
+      return "cannot parse text";
+    case tinyxml2::XML_ERROR_PARSING_CDATA:
+      return "cannot parse a CDATA section";
+    case tinyxml2::XML_ERROR_PARSING_COMMENT:
+      return "cannot parse a comment";
+    case tinyxml2::XML_ERROR_PARSING_DECLARATION:
+      return "cannot parse a declaration";
+    case tinyxml2::XML_ERROR_PARSING_UNKNOWN:
+      return "cannot parse a <!...> construct";
+    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT:
+      return "the document is empty";
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
+      return "an element is not closed by its matching end tag";
+    case tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED:
+      return "elements are nested too deeply";
+    default:
+      return "cannot parse";
+  }
+}
+
+// Reads one document; keeps the source name and the line of every block for error messages.
+class XmlSceneReader {
+ public:
+  explicit XmlSceneReader(std::string_view source) : source_(source) {}
+
+  Result<Scene> read(std::string_view text) {
+    XMLDocument document;
+    if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+      return malformed(document);
+    }
+    const XMLElement* worldElement = document.RootElement();
+    if (!worldElement) return Error{fmt::format("{}: missing <world> element", source_)};
+    if (std::strcmp(worldElement->Name(), "world") != 0) {
+      return errorAt(worldElement, fmt::format("the root element is <{}>, expected <world>",
+                                               worldElement->Name()));
+    }
+
+    Scene scene;
+    if (Status status = readWorldAttributes(*worldElement, scene); !status) {
+      return Error{status.error()};
+    }
+
+    // Viewer settings and the one blockList; anything else is VisibleSim's business.
+    const XMLElement* blockList = nullptr;
+    for (const XMLElement* child = worldElement->FirstChildElement(); child;
+         child = child->NextSiblingElement()) {
+      const std::string_view name = child->Name();
+      if (name == "camera" && !scene.visibleSim.camera) {
+        scene.visibleSim.camera = attributesOf(*child);
+      } else if (name == "spotlight" && !scene.visibleSim.spotlight) {
+        scene.visibleSim.spotlight = attributesOf(*child);
+      } else if (name == "blockList") {
+        if (blockList) {
+          return errorAt(child, fmt::format("a second <blockList> (the first is on line {}); "
+                                            "only one is supported",
+                                            blockList->GetLineNum()));
+        }
+        blockList = child;
+      }
+    }
+    if (!blockList) return errorAt(worldElement, "<world> has no <blockList>");
+
+    if (Status status = readBlocks(*blockList, scene); !status) return Error{status.error()};
+    scene.world.latchAllNeighbours();
+    return scene;
+  }
+
+ private:
+  Error malformed(const XMLDocument& document) const {
+    std::string message = fmt::format("malformed XML: {} ({}", describeXmlError(document.ErrorID()),
+                                      document.ErrorName());
+    // tinyxml2's own text ends with details such as "XMLElement name=blockList" after the line.
+    const std::string_view detail = document.ErrorStr();
+    if (const size_t colon = detail.find(": "); colon != std::string_view::npos) {
+      message += fmt::format(": {}", detail.substr(colon + 2));
+    }
+    message += ")";
+    if (document.ErrorLineNum() <= 0) return Error{fmt::format("{}: {}", source_, message)};
+    return Error{fmt::format("{}:{}: {}", source_, document.ErrorLineNum(), message)};
+  }
+
+  Error errorAt(const XMLElement* element, std::string_view message) const {
+    return Error{fmt::format("{}:{}: {}", source_, element->GetLineNum(), message)};
+  }
+
+  // "block position "1,2" must be three integers x,y,z"
+  Error attributeError(const XMLElement* element, const char* attribute, const char* value,
+                       std::string_view rule) const {
+    return errorAt(element,
+                   fmt::format("{} {} \"{}\" {}", element->Name(), attribute, value, rule));
+  }
+
+  static AttributeList attributesOf(const XMLElement& element) {
+    AttributeList list;
+    for (auto* a = element.FirstAttribute(); a; a = a->Next()) {
+      list.push_back({a->Name(), a->Value()});
+    }
+    return list;
+  }
+
+  Status readWorldAttributes(const XMLElement& element, Scene& scene) const {
+    world::Bounds bounds;
+    for (auto* a = element.FirstAttribute(); a; a = a->Next()) {
+      const std::string_view name = a->Name();
+      if (name == "gridSize") {
+        bounds.gridSize = parseGridSize(a->Value());
+        if (!bounds.gridSize) {
+          return attributeError(&element, "gridSize", a->Value(),
+                                "must be three positive integers X,Y,Z");
+        }
+      } else if (name == "name") {
+        scene.name = a->Value();
+      } else if (name == "description") {
+        scene.description = a->Value();
+      } else {
+        scene.visibleSim.world.push_back({a->Name(), a->Value()});
+      }
+    }
+    scene.world = world::World(bounds);
+    return Ok{};
+  }
+
+  Status readBlocks(const XMLElement& blockList, Scene& scene) {
+    world::Color defaultColor = kDefaultColor;
+    if (const char* text = blockList.Attribute("blockSize")) {
+      const auto size = parseBlockSize(text);
+      if (!size) {
+        return attributeError(&blockList, "blockSize", text, "must be three positive numbers");
+      }
+      scene.blockSize = *size;
+    }
+    if (const char* text = blockList.Attribute("color")) {
+      const auto color = parseColor(text);
+      if (!color) {
+        return attributeError(&blockList, "color", text, "must be three integers 0..255 r,g,b");
+      }
+      defaultColor = *color;
+    }
+
+    world::World& world = scene.world;
+    uint32_t placeInFile = 0;
+    for (const XMLElement* block = blockList.FirstChildElement("block"); block;
+         block = block->NextSiblingElement("block")) {
+      ++placeInFile;
+      world::Module module;
+      module.color = defaultColor;
+
+      const char* position = block->Attribute("position");
+      if (!position) return errorAt(block, "block has no position attribute");
+      const auto cell = parseCell(position);
+      if (!cell) return attributeError(block, "position", position, "must be three integers x,y,z");
+      module.cell = *cell;
+
+      if (const char* text = block->Attribute("color")) {
+        const auto color = parseColor(text);
+        if (!color) {
+          return attributeError(block, "color", text, "must be three integers 0..255 r,g,b");
+        }
+        module.color = *color;
+      }
+      if (const char* text = block->Attribute("orientation")) {
+        const auto orientation = parseOrientation(text);
+        if (!orientation) {
+          return attributeError(block, "orientation", text, "must be an integer 0..23");
+        }
+        module.orientation = *orientation;
+      }
+      const char* idText = block->Attribute("id");
+      module.id = world::ModuleId{placeInFile};
+      if (idText) {
+        const auto id = parseId(idText);
+        if (!id) return attributeError(block, "id", idText, "must be an integer 1..4294967295");
+        module.id = world::ModuleId{*id};
+      }
+
+      // Check what World::add would refuse, to name the lines involved.
+      if (module.cell.z < 0) {
+        return attributeError(block, "position", position, "is below the ground (z < 0)");
+      }
+      if (!world.isInside(module.cell)) {
+        return attributeError(
+            block, "position", position,
+            "is outside the grid " + geometry::toString(*world.bounds().gridSize));
+      }
+      if (const world::Module* other = world.moduleAt(module.cell)) {
+        return attributeError(
+            block, "position", position,
+            fmt::format("is already occupied by the block on line {}", lineOf(world, other)));
+      }
+      if (const world::Module* other = world.find(module.id)) {
+        if (idText) {
+          return attributeError(
+              block, "id", idText,
+              fmt::format("is already used by the block on line {}", lineOf(world, other)));
+        }
+        return errorAt(block, fmt::format("block gets id {} from its place in the file, already "
+                                          "used by the block on line {}; give it an id attribute",
+                                          module.id.value, lineOf(world, other)));
+      }
+      if (Status added = world.add(module); !added) return errorAt(block, added.error());
+      lines_.push_back(block->GetLineNum());
+    }
+    return Ok{};
+  }
+
+  // Modules are stored in the order they were added, which is the order of lines_.
+  int lineOf(const world::World& world, const world::Module* module) const {
+    return lines_[size_t(module - world.modules().data())];
+  }
+
+  std::string_view source_;
+  std::vector<int> lines_;
+};
+
+// An XML name as far as we write them: a letter or '_' then letters, digits, '_', '-', '.'.
+bool isXmlName(std::string_view name) {
+  auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  if (name.empty() || !letter(name.front())) return false;
+  for (const char c : name) {
+    if (!letter(c) && !(c >= '0' && c <= '9') && c != '-' && c != '.') return false;
+  }
+  return true;
+}
+
+Status checkAttributes(const AttributeList& list, std::string_view element,
+                       const std::set<std::string_view>& reserved) {
+  std::set<std::string_view> seen(reserved.begin(), reserved.end());
+  for (const Attribute& attribute : list) {
+    if (!isXmlName(attribute.name)) {
+      return Error{fmt::format("<{}> attribute name \"{}\" is not a valid XML name", element,
+                               attribute.name)};
+    }
+    if (!seen.insert(attribute.name).second) {
+      return Error{
+          fmt::format("<{}> attribute \"{}\" appears twice or is written by the scene "
+                      "itself",
+                      element, attribute.name)};
+    }
+  }
+  return Ok{};
+}
+
+Status checkWritable(const Scene& scene) {
+  const VisibleSimView& view = scene.visibleSim;
+  if (Status s = checkAttributes(view.world, "world", {"gridSize", "name", "description"}); !s) {
+    return s;
+  }
+  if (view.camera) {
+    if (Status s = checkAttributes(*view.camera, "camera", {}); !s) return s;
+  }
+  if (view.spotlight) {
+    if (Status s = checkAttributes(*view.spotlight, "spotlight", {}); !s) return s;
+  }
+  return Ok{};
+}
+
+std::string colorText(const world::Color& color) {
+  return fmt::format("{},{},{}", color.r, color.g, color.b);
+}
+
+void printElement(tinyxml2::XMLPrinter& printer, const char* name, const AttributeList& list) {
+  printer.OpenElement(name);
+  for (const Attribute& attribute : list) {
+    printer.PushAttribute(attribute.name.c_str(), attribute.value.c_str());
+  }
+  printer.CloseElement();
+}
+
+// The layout follows VisibleSim's own files: declaration, world, viewer settings, blockList.
+void printScene(tinyxml2::XMLPrinter& printer, const Scene& scene) {
+  printer.PushDeclaration("xml version=\"1.0\" standalone=\"no\" ");
+  printer.OpenElement("world");
+  if (const auto& grid = scene.world.bounds().gridSize) {
+    printer.PushAttribute("gridSize", geometry::toString(*grid).c_str());
+  }
+  for (const Attribute& attribute : scene.visibleSim.world) {
+    printer.PushAttribute(attribute.name.c_str(), attribute.value.c_str());
+  }
+  if (scene.name) printer.PushAttribute("name", scene.name->c_str());
+  if (scene.description) printer.PushAttribute("description", scene.description->c_str());
+  if (scene.visibleSim.camera) printElement(printer, "camera", *scene.visibleSim.camera);
+  if (scene.visibleSim.spotlight) printElement(printer, "spotlight", *scene.visibleSim.spotlight);
+
+  printer.OpenElement("blockList");
+  const auto& size = scene.blockSize;
+  printer.PushAttribute("blockSize", fmt::format("{},{},{}", formatNumber(size[0]),
+                                                 formatNumber(size[1]), formatNumber(size[2]))
+                                         .c_str());
+  // Ids 1, 2, 3... in order are what a reader assigns anyway; only other ids need writing.
+  const auto modules = scene.world.modules();
+  bool writeIds = false;
+  for (size_t i = 0; i < modules.size() && !writeIds; ++i) writeIds = modules[i].id.value != i + 1;
+  for (const world::Module& module : modules) {
+    printer.OpenElement("block");
+    if (writeIds) printer.PushAttribute("id", std::to_string(module.id.value).c_str());
+    printer.PushAttribute("position", geometry::toString(module.cell).c_str());
+    printer.PushAttribute("color", colorText(module.color).c_str());
+    printer.PushAttribute("orientation", std::to_string(module.orientation.code()).c_str());
+    printer.CloseElement();
+  }
+  printer.CloseElement();
+  printer.CloseElement();
+}
+
+}  // namespace
+
+Result<Scene> parseVisibleSimXml(std::string_view text, std::string_view source) {
+  return XmlSceneReader(source).read(text);
+}
+
+Result<std::string> toVisibleSimXml(const Scene& scene) {
+  if (Status status = checkWritable(scene); !status) return Error{status.error()};
+  tinyxml2::XMLPrinter printer;
+  printScene(printer, scene);
+  return std::string(printer.CStr(), size_t(printer.CStrSize() - 1));
+}
+
+Status writeVisibleSimXml(const Scene& scene, std::FILE* file) {
+  if (Status status = checkWritable(scene); !status) return status;
+  tinyxml2::XMLPrinter printer(file);
+  printScene(printer, scene);
+  if (std::ferror(file)) return Error{std::strerror(errno)};
+  return Ok{};
+}
+
+}  // namespace datomsim::io

@@ -1,0 +1,56 @@
+// Typed messages between module programs, carried by value without allocation.
+//
+// A message type is a small trivially copyable struct with a name:
+//
+//   struct DistanceMsg {
+//     static constexpr std::string_view kName = "DistanceMsg";
+//     geometry::Cell cell;
+//     int32_t distance;
+//   };
+//
+// Message::of(DistanceMsg{...}) wraps it; the receiver asks `message.as<DistanceMsg>()`, which is
+// null for any other type. No integer codes and no casts in programs.
+#pragma once
+
+#include <array>
+#include <cstring>
+#include <string_view>
+#include <type_traits>
+
+namespace datomsim::program {
+
+class Message {
+ public:
+  static constexpr size_t kCapacity = 48;
+
+  template <typename T>
+  static Message of(const T& payload) {
+    static_assert(std::is_trivially_copyable_v<T>, "messages are plain data");
+    static_assert(sizeof(T) <= kCapacity, "message payload too large");
+    Message message;
+    message.type_ = &typeTag<T>;
+    message.name_ = T::kName;
+    std::memcpy(message.bytes_.data(), &payload, sizeof(T));
+    return message;
+  }
+
+  // The payload if the message is a T, else null.
+  template <typename T>
+  const T* as() const {
+    if (type_ != &typeTag<T>) return nullptr;
+    return reinterpret_cast<const T*>(bytes_.data());
+  }
+
+  std::string_view typeName() const { return name_; }
+
+ private:
+  // One distinct address per message type identifies it without RTTI.
+  template <typename T>
+  static inline const char typeTag = 0;
+
+  const char* type_ = nullptr;
+  std::string_view name_;
+  alignas(8) std::array<unsigned char, kCapacity> bytes_{};
+};
+
+}  // namespace datomsim::program

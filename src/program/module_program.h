@@ -1,0 +1,103 @@
+// What a module program sees and does: the only window a program has on the simulation.
+//
+// Like a controller on a real Datom, a program knows its own id, cell and orientation, which of
+// its connectors are latched, the motions it could make as a mobile (with the reasons others are
+// refused), and the time. It acts by sending typed messages through latched connectors, asking
+// its own pistons to compress or release, asking for a motion, and setting timers. It never sees
+// the world or another module directly. docs/simulation.md gives the semantics.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/random.h"
+#include "common/result.h"
+#include "geometry/cell.h"
+#include "geometry/orientation.h"
+#include "motion/motion.h"
+#include "program/message.h"
+#include "world/module.h"
+
+namespace datomsim::program {
+
+// Simulated time in microseconds: integers keep event order exact and runs reproducible.
+using Time = int64_t;
+inline constexpr Time kMicrosecond = 1;
+inline constexpr Time kMillisecond = 1000;
+inline constexpr Time kSecond = 1000000;
+
+class ModuleContext {
+ public:
+  virtual ~ModuleContext() = default;
+
+  virtual world::ModuleId id() const = 0;
+  virtual geometry::Cell cell() const = 0;
+  virtual geometry::Orientation orientation() const = 0;
+  virtual Time now() const = 0;
+
+  // Whether a cell holds a module, for cells within two lattice steps (the range a module senses,
+  // as it must to judge a motion rule); nullopt further away.
+  virtual std::optional<bool> occupied(const geometry::Cell& cell) const = 0;
+
+  // Bit i set: the module's own connector i is latched to a neighbour.
+  virtual uint16_t latchedConnectors() const = 0;
+  // The cell on the other side of one of the module's own connectors.
+  virtual geometry::Cell cellBehind(int ownConnector) const = 0;
+
+  // Sends a message through one of the module's own connectors. Refused, with a reason, when the
+  // connector is not latched; the message arrives after the simulation's message delay.
+  virtual Status send(int ownConnector, const Message& message) = 0;
+
+  // Compresses one of the module's own pistons, or releases the compressed one. Refused when
+  // another piston is compressed or moving, or when the module is in a motion. The program hears
+  // back through onDeformationDone.
+  virtual Status compress(int ownPiston) = 0;
+  virtual Status release() = 0;
+  // The own piston compressed (or being compressed), or -1.
+  virtual int compressedPiston() const = 0;
+
+  // Every rule for this module as the mobile, valid or refused (paper, Algorithm 1:
+  // getAllValidRules).
+  virtual std::vector<motion::Evaluation> motions() const = 0;
+  // Every rule with this module as the pivot and the mobile imagined in a neighbouring cell,
+  // judged from this module's neighbourhood (the distributed gradient's view).
+  virtual std::vector<motion::Evaluation> motionsAsPivot(const geometry::Cell& mobileCell) const = 0;
+
+  // Starts a motion. The simulator checks at once that the rule still holds and that every module
+  // of its deformation list has compressed its piston; a refusal comes back as the error. The
+  // program hears back through onMotionDone.
+  virtual Status move(const motion::Motion& motion) = 0;
+
+  // Calls onTimer(tag) after `delay`.
+  virtual void setTimer(Time delay, int tag) = 0;
+
+  // This module's own random stream, derived from the run's seed and the module id.
+  virtual Random& random() = 0;
+
+  virtual void setColor(world::Color color) = 0;
+};
+
+class ModuleProgram {
+ public:
+  virtual ~ModuleProgram() = default;
+
+  virtual void onStart(ModuleContext& context) = 0;
+  virtual void onMessage(ModuleContext& /*context*/, int /*ownConnector*/,
+                         const Message& /*message*/) {}
+  // A compression or a release this module asked for has finished.
+  virtual void onDeformationDone(ModuleContext& /*context*/) {}
+  // A motion this module asked for has finished; the module is at the goal.
+  virtual void onMotionDone(ModuleContext& /*context*/) {}
+  // A timer this module set has fired, or the run's driver triggered it (Simulator::trigger).
+  virtual void onTimer(ModuleContext& /*context*/, int /*tag*/) {}
+};
+
+// Makes the program of one module. Called once per module, in increasing id order.
+using ProgramFactory = std::function<std::unique_ptr<ModuleProgram>(world::ModuleId)>;
+
+}  // namespace datomsim::program

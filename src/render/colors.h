@@ -1,0 +1,45 @@
+// The colours of the pictures: distances, module shading by layer, and the path.
+//
+// They are one table so that the PNG and SVG writers, the browser viewer (which copies the
+// numbers) and the tests agree on every colour. Distances 0..9 follow the paper (figure
+// "gradient", DOMAIN section 7); the paper says nothing beyond 9, see distanceColor.
+#pragma once
+
+#include "world/module.h"
+
+namespace datomsim::render {
+
+// Number of distances with a colour of their own in the paper: 0..9.
+inline constexpr int kPaperDistanceCount = 10;
+
+// Distances from kDarkRampEnd on all get the last colour of the dark ramp.
+inline constexpr int kDarkRampEnd = 25;
+
+// The colour of a cell at `distance` motions from the goal.
+//   0 red, 1 orange, 2 yellow, 3 green, 4 blue, 5 cyan, 6 pink, 7 grey, 8 salmon, 9 white (paper);
+//   10..kDarkRampEnd a ramp from violet to a dark navy, the same from kDarkRampEnd on. The pictures
+//   print the number on every square from 10 on, since neighbouring ramp colours look alike.
+// Negative distances have no meaning; they get black.
+world::Color distanceColor(int distance);
+
+// True when a square of this distance carries its number (distanceColor's dark ramp).
+constexpr bool isLabelledDistance(int distance) {
+  return distance >= kPaperDistanceCount;
+}
+
+// Colour of the path line and of its markers.
+inline constexpr world::Color kPathColor{220, 0, 0};
+
+// How much lighter each layer above the lowest one of the picture is drawn (fraction of the way
+// to white), and the most any layer is lightened.
+inline constexpr double kLightenPerLayer = 0.2;
+inline constexpr double kMaxLighten = 0.72;
+
+// The fill of a module `layersAboveLowest` layers above the lowest layer of the picture: its own
+// colour on the lowest layer, lighter higher up, so that layers read at a glance from the top.
+world::Color moduleFillColor(world::Color color, int layersAboveLowest);
+
+// The outline of a module disc: its fill colour darkened.
+world::Color moduleOutlineColor(world::Color fill);
+
+}  // namespace datomsim::render

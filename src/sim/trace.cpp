@@ -1,0 +1,179 @@
+#include "sim/trace.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <nlohmann/json.hpp>
+
+#include "datom/linkage.h"
+#include "datom/parts.h"
+#include "geometry/lattice.h"
+
+namespace datomsim::sim {
+
+using geometry::Vec3;
+
+namespace {
+
+// Kinematics sampled at f = 0, 1/8, ..., 1: the viewer interpolates between samples.
+constexpr int kSamples = 9;
+
+// Numbers with 6 significant digits, and never "-0": the trace must be byte-stable.
+std::string number(double value) {
+  if (std::abs(value) < 5e-10) value = 0;
+  return fmt::format("{:.6g}", value);
+}
+
+std::string vec(const Vec3& v) {
+  return fmt::format("[{},{},{}]", number(v.x), number(v.y), number(v.z));
+}
+
+// A JSON string literal, escaped.
+std::string quoted(const std::string& text) { return nlohmann::json(text).dump(); }
+
+std::string seconds(program::Time t) { return number(double(t) / program::kSecond); }
+
+std::string partJson(const datom::Part& part, int index) {
+  static constexpr const char* kKinds[] = {"core", "piston", "link", "connector"};
+  return fmt::format(
+      "{{\"i\":{},\"kind\":\"{}\",\"piston\":{},\"connector\":{},\"centre\":{},\"axes\":[{},{},{}],"
+      "\"size\":[{},{},{}]}}",
+      index, kKinds[static_cast<int>(part.kind)], part.piston, part.connector, vec(part.centre),
+      vec(part.axes[0]), vec(part.axes[1]), vec(part.axes[2]), number(part.size[0]),
+      number(part.size[1]), number(part.size[2]));
+}
+
+// The parts a piston moves: its plate, its 4 links and its 4 connectors.
+bool movesWith(const datom::Part& part, int piston) {
+  if (part.kind == datom::PartKind::kPiston || part.kind == datom::PartKind::kLink) {
+    return part.piston == piston;
+  }
+  if (part.kind == datom::PartKind::kConnector) {
+    return geometry::axisMovesDirection(piston, part.connector);
+  }
+  return false;
+}
+
+}  // namespace
+
+TraceRecorder::TraceRecorder(const datom::Dimensions& dimensions) : dimensions_(dimensions) {}
+
+void TraceRecorder::header(const world::World& world, const std::string& description) {
+  auto out = std::back_inserter(text_);
+  const datom::Dimensions& d = dimensions_;
+  fmt::format_to(out,
+                 "{{\"format\":\"datomsim-trace\",\"version\":1,\"description\":{},"
+                 "\"spacing\":{},\"dimensions\":{{\"r\":{},\"t\":{},\"c\":{},\"e\":{},\"a\":{},"
+                 "\"core_edge\":{}}},",
+                 quoted(description), number(spacing()), number(d.radius()), number(d.thickness()),
+                 number(d.connectorWidth()), number(d.linkLength()), number(d.amplitude()),
+                 number(d.coreEdge()));
+
+  // The 24 orientations as rotation matrices (rows), module frame to world.
+  text_ += "\"orientations\":[";
+  for (int code = 0; code < geometry::Orientation::kCount; ++code) {
+    const auto o = *geometry::Orientation::fromCode(code);
+    const Vec3 x = o.apply({1, 0, 0}), y = o.apply({0, 1, 0}), z = o.apply({0, 0, 1});
+    fmt::format_to(out, "{}[{},{},{}]", code ? "," : "", vec({x.x, y.x, z.x}),
+                   vec({x.y, y.y, z.y}), vec({x.z, y.z, z.z}));
+  }
+  text_ += "],";
+
+  // Joint angles and the moving parts of each piston, sampled from the C++ kinematics.
+  text_ += "\"kinematics\":{\"fractions\":[";
+  for (int k = 0; k < kSamples; ++k) {
+    fmt::format_to(out, "{}{}", k ? "," : "", number(double(k) / (kSamples - 1)));
+  }
+  text_ += "],\"angles\":[";
+  for (int k = 0; k < kSamples; ++k) {
+    const auto linkage = datom::solveLinkage(d, double(k) / (kSamples - 1));
+    fmt::format_to(out, "{}{{\"q0\":{},\"q1\":{},\"p0\":{},\"travel\":{}}}", k ? "," : "",
+                   number(linkage->angles.q0), number(linkage->angles.q1),
+                   number(linkage->angles.p0), number(linkage->travel));
+  }
+  const auto rest = datom::partsLayout(d, geometry::kNoAxis, 0);
+  text_ += "],\"rest\":[";
+  for (size_t i = 0; i < rest->size(); ++i) {
+    if (i) text_ += ",";
+    text_ += partJson((*rest)[i], int(i));
+  }
+  text_ += "],\"pistons\":[";
+  for (int piston = 0; piston < geometry::kAxisCount; ++piston) {
+    text_ += piston ? ",[" : "[";
+    for (int k = 0; k < kSamples; ++k) {
+      const auto parts = datom::partsLayout(d, piston, double(k) / (kSamples - 1));
+      text_ += k ? ",[" : "[";
+      bool first = true;
+      for (size_t i = 0; i < parts->size(); ++i) {
+        if (!movesWith((*parts)[i], piston)) continue;
+        if (!first) text_ += ",";
+        first = false;
+        text_ += partJson((*parts)[i], int(i));
+      }
+      text_ += "]";
+    }
+    text_ += "]";
+  }
+  text_ += "]},";
+
+  // The initial scene.
+  text_ += "\"modules\":[";
+  bool first = true;
+  for (const world::Module& m : world.modules()) {
+    fmt::format_to(out,
+                   "{}{{\"id\":{},\"cell\":[{},{},{}],\"pos\":{},\"o\":{},\"rgb\":[{},{},{}],"
+                   "\"latches\":{}}}",
+                   first ? "" : ",\n", m.id.value, m.cell.x, m.cell.y, m.cell.z,
+                   vec(geometry::worldPosition(m.cell, spacing())), m.orientation.code(),
+                   m.color.r, m.color.g, m.color.b, m.latches);
+    first = false;
+  }
+  text_ += "]}\n";
+}
+
+void TraceRecorder::piston(program::Time t, world::ModuleId module, int ownPiston, double from,
+                           double to, program::Time duration) {
+  fmt::format_to(std::back_inserter(text_),
+                 "{{\"t\":{},\"piston\":{{\"m\":{},\"p\":{},\"from\":{},\"to\":{},\"d\":{}}}}}\n",
+                 seconds(t), module.value, ownPiston, number(from), number(to), seconds(duration));
+}
+
+void TraceRecorder::turn(program::Time t, world::ModuleId module, const Vec3& axis,
+                         const Vec3& centre, double degrees, program::Time duration) {
+  fmt::format_to(std::back_inserter(text_),
+                 "{{\"t\":{},\"turn\":{{\"m\":{},\"axis\":{},\"centre\":{},\"deg\":{},\"d\":{}}}}}\n",
+                 seconds(t), module.value, vec(axis), vec(centre), number(degrees),
+                 seconds(duration));
+}
+
+void TraceRecorder::place(program::Time t, world::ModuleId module, const geometry::Cell& cell,
+                          geometry::Orientation orientation) {
+  fmt::format_to(std::back_inserter(text_),
+                 "{{\"t\":{},\"place\":{{\"m\":{},\"cell\":[{},{},{}],\"pos\":{},\"o\":{}}}}}\n",
+                 seconds(t), module.value, cell.x, cell.y, cell.z,
+                 vec(geometry::worldPosition(cell, spacing())), orientation.code());
+}
+
+void TraceRecorder::latch(program::Time t, world::ModuleId a, int connectorA, world::ModuleId b,
+                          int connectorB, bool latched) {
+  fmt::format_to(std::back_inserter(text_),
+                 "{{\"t\":{},\"latch\":{{\"a\":{},\"ca\":{},\"b\":{},\"cb\":{},\"on\":{}}}}}\n",
+                 seconds(t), a.value, connectorA, b.value, connectorB, latched);
+}
+
+void TraceRecorder::color(program::Time t, world::ModuleId module, world::Color color) {
+  fmt::format_to(std::back_inserter(text_), "{{\"t\":{},\"color\":{{\"m\":{},\"rgb\":[{},{},{}]}}}}\n",
+                 seconds(t), module.value, color.r, color.g, color.b);
+}
+
+void TraceRecorder::note(program::Time t, const std::string& text) {
+  fmt::format_to(std::back_inserter(text_), "{{\"t\":{},\"note\":{}}}\n", seconds(t), quoted(text));
+}
+
+void TraceRecorder::footer(program::Time t, const std::string& summaryJson) {
+  fmt::format_to(std::back_inserter(text_), "{{\"t\":{},\"end\":{}}}\n", seconds(t), summaryJson);
+}
+
+}  // namespace datomsim::sim

@@ -1,0 +1,98 @@
+// Test helpers comparing what the scene files carry: modules (id, cell, orientation, colour, in
+// order), bounds, block size and viewer settings. Latches and pistons are not in the files.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "io/scene.h"
+
+namespace datomsim::io::testing {
+
+inline ::testing::AssertionResult sameModules(const world::World& a, const world::World& b) {
+  if (a.size() != b.size()) {
+    return ::testing::AssertionFailure() << a.size() << " modules vs " << b.size();
+  }
+  for (size_t i = 0; i < a.size(); ++i) {
+    const world::Module& x = a.modules()[i];
+    const world::Module& y = b.modules()[i];
+    if (x.id != y.id || x.cell != y.cell || x.orientation != y.orientation || x.color != y.color) {
+      return ::testing::AssertionFailure()
+             << "module #" << i << ": id " << x.id.value << " at " << geometry::toString(x.cell)
+             << " orientation " << x.orientation.code() << " color " << int(x.color.r) << ","
+             << int(x.color.g) << "," << int(x.color.b) << " vs id " << y.id.value << " at "
+             << geometry::toString(y.cell) << " orientation " << y.orientation.code() << " color "
+             << int(y.color.r) << "," << int(y.color.g) << "," << int(y.color.b);
+    }
+  }
+  if (!(a.bounds() == b.bounds())) return ::testing::AssertionFailure() << "bounds differ";
+  return ::testing::AssertionSuccess();
+}
+
+inline ::testing::AssertionResult sameScene(const Scene& a, const Scene& b) {
+  if (auto modules = sameModules(a.world, b.world); !modules) return modules;
+  if (a.blockSize != b.blockSize) return ::testing::AssertionFailure() << "block sizes differ";
+  if (a.name != b.name) return ::testing::AssertionFailure() << "names differ";
+  if (a.description != b.description) return ::testing::AssertionFailure() << "descriptions differ";
+  if (!(a.visibleSim == b.visibleSim)) {
+    return ::testing::AssertionFailure() << "viewer settings differ";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+inline std::string readText(const std::filesystem::path& path) {
+  std::ifstream input(path, std::ios::binary);
+  std::stringstream text;
+  text << input.rdbuf();
+  return text.str();
+}
+
+// A fresh empty directory, removed with its content at the end of the test.
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory() {
+    static int counter = 0;
+    path_ = std::filesystem::temp_directory_path() /
+            ("datomsim-io-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~TemporaryDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+
+  // The names of the files in the directory, sorted.
+  std::vector<std::string> fileNames() const {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(path_)) {
+      names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// The shared reference scenes, or an empty path when the shared folder is absent.
+inline std::filesystem::path sharedScene(const std::string& name) {
+  const std::filesystem::path path = std::filesystem::path(DATOMSIM_SHARED_DIR) / "scenes" / name;
+  return std::filesystem::exists(path) ? path : std::filesystem::path();
+}
+
+}  // namespace datomsim::io::testing

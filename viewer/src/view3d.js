@@ -1,0 +1,331 @@
+// The 3D picture: every part of every module as an instanced box, the distance map and path
+// overlay, labels, picking and the camera. It draws frames that the timeline computed; it keeps no
+// simulation state of its own.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
+import { LATCHED_CONNECTOR, PATH_COLOR, distanceColor, mixRgb, partColor } from './colors.js';
+import { thickened } from './kinematics.js';
+import { cellToWorld } from './lattice.js';
+
+// Parts thinner than this fraction of the radius are drawn this thick (a trace of the thin model
+// has t = 0: its plates would be invisible).
+export const MIN_THICKNESS = 0.06;
+// Side of a distance square, and radius of the path line, in lattice spacings.
+export const DISTANCE_CUBE_SIDE = 0.3;
+export const PATH_RADIUS = 0.035;
+
+const BACKGROUND = 0xe9edf2;
+
+function colorOf(rgb) {
+  return new THREE.Color().setRGB(rgb[0] / 255, rgb[1] / 255, rgb[2] / 255, THREE.SRGBColorSpace);
+}
+
+export class View3D {
+  constructor(container, timeline, kinematics, overlay) {
+    this.container = container;
+    this.timeline = timeline;
+    this.kinematics = kinematics;
+    this.header = timeline.header;
+    this.spacing = this.header.spacing;
+    this.radius = this.header.dimensions.r;
+    this.scheme = 'paper';
+    this.showLatches = false;
+    this.selected = -1;
+
+    // Renderer, camera (z up, as the lattice) and orbit controls.
+    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
+    this.renderer.shadowMap.enabled = true;
+    this.renderer.shadowMap.type = THREE.PCFSoftShadowMap;
+    container.appendChild(this.renderer.domElement);
+    this.labelRenderer = new CSS2DRenderer();
+    this.labelRenderer.domElement.className = 'dv-labels';
+    container.appendChild(this.labelRenderer.domElement);
+
+    this.scene = new THREE.Scene();
+    this.scene.background = new THREE.Color(BACKGROUND);
+    this.camera = new THREE.PerspectiveCamera(35, 1, 0.05, 1000);
+    this.camera.up.set(0, 0, 1);
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.enableDamping = false;
+    this.controls.screenSpacePanning = true;
+    this.controls.addEventListener('change', () => this.render());
+
+    this.buildLights();
+    this.buildModules();
+    this.buildGround();
+    this.buildOverlay(overlay);
+    this.buildLabels();
+    this.resize();
+    this.fit();
+  }
+
+  buildLights() {
+    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x8a8f99, 1.6));
+    const sun = new THREE.DirectionalLight(0xffffff, 1.8);
+    sun.castShadow = true;
+    sun.shadow.mapSize.set(2048, 2048);
+    sun.shadow.bias = -0.0005;
+    sun.shadow.normalBias = 0.02;
+    this.sun = sun;
+    this.scene.add(sun);
+    this.scene.add(sun.target);
+    const fill = new THREE.DirectionalLight(0xffffff, 0.5);
+    fill.position.set(1, 1, -0.3);
+    this.scene.add(fill);
+  }
+
+  // One instance per part per module, in header order: instance = module * parts + part.
+  buildModules() {
+    const count = this.header.modules.length * this.kinematics.partCount;
+    const geometry = new THREE.BoxGeometry(1, 1, 1);
+    const material = new THREE.MeshStandardMaterial({ roughness: 0.55, metalness: 0.05 });
+    this.mesh = new THREE.InstancedMesh(geometry, material, Math.max(1, count));
+    this.mesh.count = count;
+    this.mesh.castShadow = true;
+    this.mesh.receiveShadow = true;
+    this.mesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
+    this.mesh.frustumCulled = false;
+    for (let i = 0; i < count; ++i) this.mesh.setColorAt(i, new THREE.Color(1, 1, 1));
+    this.scene.add(this.mesh);
+    this.partPose = { centre: new THREE.Vector3(), quaternion: new THREE.Quaternion(), size: new THREE.Vector3() };
+  }
+
+  // The scene's extent from the initial module centres (and overlay cells), padded by a module.
+  bounds() {
+    const box = new THREE.Box3();
+    for (const m of this.header.modules) box.expandByPoint(new THREE.Vector3(...m.pos));
+    if (this.overlayCells) for (const p of this.overlayCells) box.expandByPoint(p);
+    if (box.isEmpty()) box.expandByPoint(new THREE.Vector3());
+    box.expandByScalar(this.radius);
+    return box;
+  }
+
+  buildGround() {
+    const box = this.bounds();
+    const size = box.getSize(new THREE.Vector3());
+    const centre = box.getCenter(new THREE.Vector3());
+    // The lowest point of a module at rest lies (r + c/2) / sqrt2 below its centre (a piston
+    // plate); the ground plane touches the lowest modules there.
+    const c = this.header.dimensions.c ?? 0.61678 * this.radius;
+    const groundZ = box.min.z + this.radius - (this.radius + c / 2) / Math.SQRT2 - 0.01 * this.radius;
+    const extent = Math.max(size.x, size.y) * 1.6 + 4 * this.spacing;
+    const ground = new THREE.Mesh(
+      new THREE.PlaneGeometry(extent, extent),
+      new THREE.ShadowMaterial({ opacity: 0.18 }),
+    );
+    ground.position.set(centre.x, centre.y, groundZ);
+    ground.receiveShadow = true;
+    this.scene.add(ground);
+    const divisions = Math.max(2, Math.round(extent / this.spacing));
+    const grid = new THREE.GridHelper(extent, divisions, 0xb4bcc8, 0xcdd3dc);
+    grid.rotation.x = Math.PI / 2;
+    grid.position.set(centre.x, centre.y, groundZ - 0.001);
+    this.scene.add(grid);
+
+    // The sun's shadow camera covers the scene.
+    const span = Math.max(size.x, size.y, size.z) * 0.9 + 2 * this.spacing;
+    this.sun.position.set(centre.x - span * 0.6, centre.y - span * 0.9, centre.z + span * 1.6);
+    this.sun.target.position.copy(centre);
+    const cam = this.sun.shadow.camera;
+    cam.left = -span;
+    cam.right = span;
+    cam.top = span;
+    cam.bottom = -span;
+    cam.near = 0.1;
+    cam.far = span * 5;
+    cam.updateProjectionMatrix();
+  }
+
+  buildOverlay(overlay) {
+    this.overlayGroup = new THREE.Group();
+    this.scene.add(this.overlayGroup);
+    this.overlayCells = [];
+    if (!overlay) return;
+    const s = this.spacing;
+
+    // Distances: a small cube at the centre of every reachable cell, in the paper's colours, with
+    // dark edges so that white and yellow cubes stand out.
+    const distances = overlay.distances;
+    if (distances.length > 0) {
+      const side = DISTANCE_CUBE_SIDE * s;
+      const cubes = new THREE.InstancedMesh(
+        new THREE.BoxGeometry(side, side, side),
+        new THREE.MeshBasicMaterial(),
+        distances.length,
+      );
+      const matrix = new THREE.Matrix4();
+      const edgePositions = [];
+      const edges = new THREE.EdgesGeometry(new THREE.BoxGeometry(side, side, side));
+      const edgeArray = edges.attributes.position.array;
+      distances.forEach(([x, y, z, d], k) => {
+        const p = cellToWorld([x, y, z], s);
+        this.overlayCells.push(new THREE.Vector3(...p));
+        matrix.makeTranslation(p[0], p[1], p[2]);
+        cubes.setMatrixAt(k, matrix);
+        cubes.setColorAt(k, colorOf(distanceColor(d)));
+        for (let e = 0; e < edgeArray.length; e += 3) {
+          edgePositions.push(edgeArray[e] + p[0], edgeArray[e + 1] + p[1], edgeArray[e + 2] + p[2]);
+        }
+      });
+      this.overlayGroup.add(cubes);
+      const edgeGeometry = new THREE.BufferGeometry();
+      edgeGeometry.setAttribute('position', new THREE.Float32BufferAttribute(edgePositions, 3));
+      this.overlayGroup.add(
+        new THREE.LineSegments(edgeGeometry, new THREE.LineBasicMaterial({ color: 0x202020 })),
+      );
+      this.distanceCubes = cubes;
+      this.distanceCells = distances;
+    }
+
+    // Path: a red tube through the centres of its cells, a ball at each cell, larger at the ends.
+    const path = overlay.path;
+    if (path.length > 0) {
+      const red = colorOf(PATH_COLOR);
+      const material = new THREE.MeshBasicMaterial({ color: red });
+      const points = path.map((cell) => new THREE.Vector3(...cellToWorld(cell, s)));
+      for (const p of points) this.overlayCells.push(p);
+      const up = new THREE.Vector3(0, 1, 0);
+      for (let k = 0; k + 1 < points.length; ++k) {
+        const a = points[k];
+        const b = points[k + 1];
+        const length = a.distanceTo(b);
+        const segment = new THREE.Mesh(
+          new THREE.CylinderGeometry(PATH_RADIUS * s, PATH_RADIUS * s, length, 12),
+          material,
+        );
+        segment.position.copy(a).add(b).multiplyScalar(0.5);
+        segment.quaternion.setFromUnitVectors(up, b.clone().sub(a).normalize());
+        this.overlayGroup.add(segment);
+      }
+      points.forEach((p, k) => {
+        const end = k === 0 || k === points.length - 1;
+        const ball = new THREE.Mesh(new THREE.SphereGeometry((end ? 2.6 : 1.7) * PATH_RADIUS * s, 16, 12), material);
+        ball.position.copy(p);
+        this.overlayGroup.add(ball);
+      });
+    }
+  }
+
+  buildLabels() {
+    this.labels = this.header.modules.map((m) => {
+      const div = document.createElement('div');
+      div.className = 'dv-label';
+      div.textContent = String(m.id);
+      const label = new CSS2DObject(div);
+      label.center.set(0.5, 0.5);
+      this.scene.add(label);
+      return label;
+    });
+    this.setLabelsVisible(false);
+  }
+
+  setLabelsVisible(visible) {
+    this.labelsVisible = visible;
+    this.labels.forEach((label, index) => {
+      label.visible = visible || index === this.selected;
+    });
+  }
+
+  setOverlayVisible(visible) {
+    this.overlayGroup.visible = visible;
+  }
+
+  // Puts every part of every module where the frame says.
+  update(frame) {
+    const kin = this.kinematics;
+    const parts = kin.partCount;
+    const minThickness = MIN_THICKNESS * this.radius;
+    const moduleMatrix = new THREE.Matrix4();
+    const partMatrix = new THREE.Matrix4();
+    const one = new THREE.Vector3(1, 1, 1);
+    const color = new THREE.Color();
+    const pose = this.partPose;
+    for (const m of frame.modules) {
+      moduleMatrix.compose(m.position, m.quaternion, one);
+      const selected = m.index === this.selected;
+      for (let i = 0; i < parts; ++i) {
+        const part = kin.parts[i];
+        kin.partPose(i, m.piston, m.fraction, pose);
+        thickened(pose, part.kind, minThickness);
+        partMatrix.compose(pose.centre, pose.quaternion, pose.size);
+        partMatrix.premultiply(moduleMatrix);
+        const instance = m.index * parts + i;
+        this.mesh.setMatrixAt(instance, partMatrix);
+        let rgb = partColor(part.kind, m.rgb, this.scheme);
+        if (this.showLatches && part.kind === 'connector' && m.latches & (1 << part.connector)) {
+          rgb = LATCHED_CONNECTOR;
+        }
+        if (selected) rgb = mixRgb(rgb, [255, 255, 255], 0.45);
+        this.mesh.setColorAt(instance, color.copy(colorOf(rgb)));
+      }
+      const label = this.labels[m.index];
+      label.position.copy(m.position);
+    }
+    this.mesh.instanceMatrix.needsUpdate = true;
+    if (this.mesh.instanceColor) this.mesh.instanceColor.needsUpdate = true;
+    this.mesh.computeBoundingSphere();
+    this.frame = frame;
+  }
+
+  render() {
+    this.renderer.render(this.scene, this.camera);
+    this.labelRenderer.render(this.scene, this.camera);
+  }
+
+  resize() {
+    const width = Math.max(1, this.container.clientWidth);
+    const height = Math.max(1, this.container.clientHeight);
+    this.renderer.setSize(width, height);
+    this.labelRenderer.setSize(width, height);
+    this.camera.aspect = width / height;
+    this.camera.updateProjectionMatrix();
+    this.render();
+  }
+
+  // Frames the whole scene from the front left, above, as the paper's figures look at it.
+  fit() {
+    const box = this.bounds();
+    const sphere = box.getBoundingSphere(new THREE.Sphere());
+    const fov = THREE.MathUtils.degToRad(this.camera.fov);
+    const fitHeight = sphere.radius / Math.sin(fov / 2);
+    const fitWidth = fitHeight / Math.min(1, this.camera.aspect);
+    const distance = Math.max(fitHeight, fitWidth) * 0.92;
+    const direction = new THREE.Vector3(-0.45, -1.0, 0.85).normalize();
+    this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
+    this.camera.near = Math.max(0.01, distance / 200);
+    this.camera.far = distance * 10;
+    this.camera.updateProjectionMatrix();
+    this.controls.target.copy(sphere.center);
+    this.controls.update();
+    this.render();
+  }
+
+  // The module under a point of the canvas (client coordinates), or -1.
+  pick(clientX, clientY) {
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    const pointer = new THREE.Vector2(
+      ((clientX - rect.left) / rect.width) * 2 - 1,
+      -((clientY - rect.top) / rect.height) * 2 + 1,
+    );
+    const raycaster = new THREE.Raycaster();
+    raycaster.setFromCamera(pointer, this.camera);
+    const hits = raycaster.intersectObject(this.mesh, false);
+    if (hits.length === 0 || hits[0].instanceId === undefined) return -1;
+    return Math.floor(hits[0].instanceId / this.kinematics.partCount);
+  }
+
+  // Screen position (client coordinates) of a module's centre in the current frame.
+  screenPositionOf(index) {
+    const m = this.frame.modules[index];
+    const p = m.position.clone().project(this.camera);
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
+  }
+
+  select(index) {
+    this.selected = index;
+    this.setLabelsVisible(this.labelsVisible);
+  }
+}

@@ -10,6 +10,7 @@
 
 #include "arguments.h"
 #include "common/result.h"
+#include "experiment/run.h"
 #include "geometry/cell.h"
 #include "motion/reach.h"
 #include "world/world.h"
@@ -19,6 +20,7 @@ namespace datomsim::app {
 void addGeometryCommand(CLI::App& app);
 void addSceneCommands(CLI::App& app);   // generate, convert, info
 void addMotionCommands(CLI::App& app);  // reach, moves, verify
+void addRunCommand(CLI::App& app);
 void addDemoCommand(CLI::App& app);
 
 // A check that ran and found a problem (e.g. counterexamples); exit status 1.
@@ -34,6 +36,9 @@ T unwrap(Result<T>&& result) {
   return std::move(result).value();
 }
 void check(const Status& status);
+
+// The JSON result of `run` (see docs/file-formats.md).
+std::string runJson(const std::string& program, const experiment::RunResult& result);
 
 // Writes text to a file atomically, or to standard output when the path is empty.
 void writeOutput(const std::string& path, const std::string& text);

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   datomsim::app::addGeometryCommand(app);
   datomsim::app::addSceneCommands(app);
   datomsim::app::addMotionCommands(app);
+  datomsim::app::addRunCommand(app);
   datomsim::app::addDemoCommand(app);
 
   try {

@@ -22,8 +22,9 @@ struct RuleArguments {
     command.add_option("--rules", rules, "Rule table: paper (double deformation) or strict")
         ->check(CLI::IsMember({"paper", "strict"}))
         ->capture_default_str();
-    command.add_option("--attachment", attachment,
-                       "Refuse deformations that would make a module let go: on or off")
+    command
+        .add_option("--attachment", attachment,
+                    "Refuse deformations that would make a module let go: on or off")
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
   }
@@ -64,7 +65,8 @@ void addReach(CLI::App& app) {
     if (!args->start.empty()) {
       const geometry::Cell start = parseCell("--start", args->start);
       path.push_back(start);
-      for (const motion::Motion& m : unwrap(motion::followGradient(scene.world, table, map, start))) {
+      for (const motion::Motion& m :
+           unwrap(motion::followGradient(scene.world, table, map, start))) {
         path.push_back(m.goal);
       }
     }

@@ -11,9 +11,13 @@ using geometry::Cell;
 
 namespace {
 
-nlohmann::ordered_json cellJson(const Cell& cell) { return {cell.x, cell.y, cell.z}; }
+nlohmann::ordered_json cellJson(const Cell& cell) {
+  return {cell.x, cell.y, cell.z};
+}
 
-std::string_view onOff(bool on) { return on ? "on" : "off"; }
+std::string_view onOff(bool on) {
+  return on ? "on" : "off";
+}
 
 }  // namespace
 

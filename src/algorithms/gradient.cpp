@@ -44,13 +44,13 @@ int32_t GradientProgram::distanceOf(program::ModuleContext& context, const Cell&
 std::vector<std::pair<Cell, int32_t>> GradientProgram::knownDistances(const Cell& self) const {
   std::vector<std::pair<Cell, int32_t>> out;
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
-    if (distances_[d] != kUnknown) out.push_back({self + geometry::neighbourOffset(d), distances_[d]});
+    if (distances_[d] != kUnknown)
+      out.push_back({self + geometry::neighbourOffset(d), distances_[d]});
   }
   return out;
 }
 
-void GradientProgram::spread(program::ModuleContext& context, const Cell& cell,
-                             int32_t distance) {
+void GradientProgram::spread(program::ModuleContext& context, const Cell& cell, int32_t distance) {
   // Which module sits behind each latched connector.
   const uint16_t latched = context.latchedConnectors();
   for (int d = 0; d < geometry::kDirectionCount; ++d) {

@@ -44,12 +44,11 @@ class Router {
   // Sends towards routed.target from this module, choosing the next hop.
   template <typename T>
   void send(program::ModuleContext& context, T routed, int arrivedThrough = -1) {
-    forward(context, routed, arrivedThrough,
-            [&](int connector, const RoutedMsg& next) {
-              T copy = routed;
-              static_cast<RoutedMsg&>(copy) = next;
-              return context.send(connector, program::Message::of(copy));
-            });
+    forward(context, routed, arrivedThrough, [&](int connector, const RoutedMsg& next) {
+      T copy = routed;
+      static_cast<RoutedMsg&>(copy) = next;
+      return context.send(connector, program::Message::of(copy));
+    });
   }
 
  private:

@@ -22,8 +22,8 @@ inline bool Router::seen(const RoutedMsg& routed) {
 }
 
 template <typename Send>
-void Router::forward(program::ModuleContext& context, const RoutedMsg& routed,
-                     int arrivedThrough, Send&& sendThrough) {
+void Router::forward(program::ModuleContext& context, const RoutedMsg& routed, int arrivedThrough,
+                     Send&& sendThrough) {
   const uint16_t latched = context.latchedConnectors();
   const double own = squaredDistance(context.cell(), routed.target);
   if (!routed.flooding) {

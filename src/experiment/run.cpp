@@ -59,8 +59,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
 
   auto mobile = placeMobile(world, request);
   if (!mobile.ok()) return Error{mobile.error()};
-  if (const world::Module* atGoal = world.moduleAt(request.goal);
-      atGoal && atGoal->id != *mobile) {
+  if (const world::Module* atGoal = world.moduleAt(request.goal); atGoal && atGoal->id != *mobile) {
     return Error{fmt::format("goal {} holds module {}, which is not the mobile",
                              toString(request.goal), atGoal->id.value)};
   }

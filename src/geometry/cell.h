@@ -35,6 +35,8 @@ Stream& operator<<(Stream& out, const Cell& cell) {
 }
 
 // Floor division by 2 for any sign: the skew lattice shifts a layer by floor(z/2) cells.
-constexpr int32_t floorHalf(int32_t v) { return v >= 0 ? v / 2 : -((-v + 1) / 2); }
+constexpr int32_t floorHalf(int32_t v) {
+  return v >= 0 ? v / 2 : -((-v + 1) / 2);
+}
 
 }  // namespace datomsim::geometry

@@ -85,7 +85,9 @@ std::string toString(const Cell& cell) {
   return std::to_string(cell.x) + "," + std::to_string(cell.y) + "," + std::to_string(cell.z);
 }
 
-Cell neighbourOffset(int direction) { return kNeighbourOffsets.at(direction); }
+Cell neighbourOffset(int direction) {
+  return kNeighbourOffsets.at(direction);
+}
 
 std::optional<int> directionOfOffset(const Cell& offset) {
   for (int d = 0; d < kDirectionCount; ++d) {
@@ -94,15 +96,21 @@ std::optional<int> directionOfOffset(const Cell& offset) {
   return std::nullopt;
 }
 
-Cell doubledAxis(int axis) { return kDoubledAxes.at(axis); }
+Cell doubledAxis(int axis) {
+  return kDoubledAxes.at(axis);
+}
 
-int oppositeAxis(int axis) { return kOppositeAxis.at(axis); }
+int oppositeAxis(int axis) {
+  return kOppositeAxis.at(axis);
+}
 
 const std::array<int, 2>& axesOfDirection(int direction) {
   return tables().axesOfDirection.at(direction);
 }
 
-const std::array<int, 4>& directionsOfAxis(int axis) { return tables().directionsOfAxis.at(axis); }
+const std::array<int, 4>& directionsOfAxis(int axis) {
+  return tables().directionsOfAxis.at(axis);
+}
 
 bool axisMovesDirection(int axis, int direction) {
   const auto& axes = axesOfDirection(direction);
@@ -137,11 +145,16 @@ Vec3 worldOffset(const Cell& offset, double spacing) {
 }
 
 Vec3 worldPosition(const Cell& cell, double spacing) {
-  return worldOffset(cell, spacing) + Vec3{0.5 * spacing, 0.5 * spacing, std::sqrt(2.0) / 4.0 * spacing};
+  return worldOffset(cell, spacing) +
+         Vec3{0.5 * spacing, 0.5 * spacing, std::sqrt(2.0) / 4.0 * spacing};
 }
 
-Vec3 directionVector(int direction) { return normalized(worldOffset(neighbourOffset(direction), 1.0)); }
+Vec3 directionVector(int direction) {
+  return normalized(worldOffset(neighbourOffset(direction), 1.0));
+}
 
-Vec3 axisVector(int axis) { return normalized(worldOffset(doubledAxis(axis), 1.0)); }
+Vec3 axisVector(int axis) {
+  return normalized(worldOffset(doubledAxis(axis), 1.0));
+}
 
 }  // namespace datomsim::geometry

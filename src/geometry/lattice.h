@@ -29,7 +29,9 @@ inline constexpr int kNoAxis = -1;
 Cell neighbourOffset(int direction);
 
 // The direction facing d from the neighbour: (d + 6) % 12.
-constexpr int oppositeDirection(int direction) { return (direction + 6) % 12; }
+constexpr int oppositeDirection(int direction) {
+  return (direction + 6) % 12;
+}
 
 // The direction whose offset is `offset`, if it is one of the 12 neighbour offsets.
 std::optional<int> directionOfOffset(const Cell& offset);

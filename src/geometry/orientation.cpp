@@ -98,9 +98,13 @@ Orientation Orientation::quarterTurn(int axis) {
   return Orientation(static_cast<uint8_t>(tables().quarterTurn.at(axis)));
 }
 
-int Orientation::worldAxis(int ownPiston) const { return tables().worldAxis[code_].at(ownPiston); }
+int Orientation::worldAxis(int ownPiston) const {
+  return tables().worldAxis[code_].at(ownPiston);
+}
 
-int Orientation::ownPiston(int worldAxis) const { return tables().ownPiston[code_].at(worldAxis); }
+int Orientation::ownPiston(int worldAxis) const {
+  return tables().ownPiston[code_].at(worldAxis);
+}
 
 int Orientation::worldDirection(int ownConnector) const {
   return tables().worldDirection[code_].at(ownConnector);

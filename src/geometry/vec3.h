@@ -27,15 +27,21 @@ struct Vec3 {
   constexpr bool operator==(const Vec3&) const = default;
 };
 
-constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr double dot(const Vec3& a, const Vec3& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
 constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
-inline double norm(const Vec3& v) { return std::sqrt(dot(v, v)); }
+inline double norm(const Vec3& v) {
+  return std::sqrt(dot(v, v));
+}
 
-inline Vec3 normalized(const Vec3& v) { return v / norm(v); }
+inline Vec3 normalized(const Vec3& v) {
+  return v / norm(v);
+}
 
 // Rotates v by `angle` radians about the unit axis `axis` (Rodrigues' formula).
 inline Vec3 rotated(const Vec3& v, const Vec3& axis, double angle) {

@@ -66,7 +66,8 @@ class ModuleContext {
   virtual std::vector<motion::Evaluation> motions() const = 0;
   // Every rule with this module as the pivot and the mobile imagined in a neighbouring cell,
   // judged from this module's neighbourhood (the distributed gradient's view).
-  virtual std::vector<motion::Evaluation> motionsAsPivot(const geometry::Cell& mobileCell) const = 0;
+  virtual std::vector<motion::Evaluation> motionsAsPivot(
+      const geometry::Cell& mobileCell) const = 0;
 
   // Starts a motion. The simulator checks at once that the rule still holds and that every module
   // of its deformation list has compressed its piston; a refusal comes back as the error. The

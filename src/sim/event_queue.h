@@ -32,8 +32,8 @@ struct Event {
   Time time = 0;
   uint64_t sequence = 0;
   EventKind kind = EventKind::kStart;
-  uint32_t module = 0;    // module id
-  int32_t argument = 0;   // connector (message), tag (timer), motion slot (motion events)
+  uint32_t module = 0;   // module id
+  int32_t argument = 0;  // connector (message), tag (timer), motion slot (motion events)
   program::Message message;
 };
 

@@ -37,15 +37,16 @@ const char* toString(EventKind kind) {
 
 std::string Violation::describe() const {
   return fmt::format("invariant violated at t = {:.6f} s, event #{} ({}, module {}): {}",
-                     double(time) / program::kSecond, sequence, toString(kind), module.value,
-                     what);
+                     double(time) / program::kSecond, sequence, toString(kind), module.value, what);
 }
 
 namespace {
 
 enum class PistonPhase : uint8_t { kRest, kCompressing, kCompressed, kReleasing };
 
-constexpr uint16_t bit(int connector) { return uint16_t(1u << connector); }
+constexpr uint16_t bit(int connector) {
+  return uint16_t(1u << connector);
+}
 
 }  // namespace
 
@@ -135,11 +136,17 @@ Simulator::Simulator(world::World world, const motion::RuleTable& table, Simulat
 
 Simulator::~Simulator() = default;
 
-size_t Simulator::bytesPerModuleState() { return sizeof(ModuleState); }
+size_t Simulator::bytesPerModuleState() {
+  return sizeof(ModuleState);
+}
 
-Module& Simulator::moduleAt(uint32_t index) { return world_.moduleAtIndex(index); }
+Module& Simulator::moduleAt(uint32_t index) {
+  return world_.moduleAtIndex(index);
+}
 
-uint32_t Simulator::indexOf(ModuleId id) const { return *world_.indexOf(id); }
+uint32_t Simulator::indexOf(ModuleId id) const {
+  return *world_.indexOf(id);
+}
 
 program::ModuleProgram* Simulator::program(ModuleId module) {
   const auto index = world_.indexOf(module);
@@ -169,7 +176,9 @@ void Simulator::trigger(ModuleId module, int tag) {
   schedule(now_, EventKind::kTimer, indexOf(module), tag);
 }
 
-void Simulator::record(TraceRecorder* trace) { trace_ = trace; }
+void Simulator::record(TraceRecorder* trace) {
+  trace_ = trace;
+}
 
 void Simulator::schedule(Time time, EventKind kind, uint32_t moduleIndex, int32_t argument,
                          const Message& message) {
@@ -242,8 +251,8 @@ Status Simulator::send(uint32_t index, int ownConnector, const Message& message)
     return Error{fmt::format("module {}: no connector {}", module.id.value, ownConnector)};
   }
   if (!(module.latches & bit(ownConnector))) {
-    return Error{fmt::format("module {}: connector {} is not latched; {} not sent",
-                             module.id.value, ownConnector, message.typeName())};
+    return Error{fmt::format("module {}: connector {} is not latched; {} not sent", module.id.value,
+                             ownConnector, message.typeName())};
   }
   // The partner: across a motion's hinge, the other module of the motion; at rest, the facing
   // neighbour.
@@ -253,12 +262,10 @@ Status Simulator::send(uint32_t index, int ownConnector, const Message& message)
   const ActiveMotion* active = state.motion >= 0 ? &motions_[state.motion] : nullptr;
   const bool isMobile = active && active->mobile == index;
   const bool isPivot = active && active->pivot == index;
-  const int hingeOwn = !active                   ? -1
-                       : isMobile               ? (active->switched ? active->mobileNew
-                                                                    : active->mobileOld)
-                       : isPivot                ? (active->switched ? active->pivotNew
-                                                                    : active->pivotOld)
-                                                : -1;
+  const int hingeOwn = !active    ? -1
+                       : isMobile ? (active->switched ? active->mobileNew : active->mobileOld)
+                       : isPivot  ? (active->switched ? active->pivotNew : active->pivotOld)
+                                  : -1;
   if (active && ownConnector == hingeOwn) {
     partner = isMobile ? active->pivot : active->mobile;
     partnerConnector = isMobile ? (active->switched ? active->pivotNew : active->pivotOld)
@@ -267,8 +274,8 @@ Status Simulator::send(uint32_t index, int ownConnector, const Message& message)
     const int direction = module.orientation.worldDirection(ownConnector);
     const Module* neighbour = world_.neighbour(module, direction);
     if (!neighbour) {
-      return Error{fmt::format("module {}: nothing behind connector {}", module.id.value,
-                               ownConnector)};
+      return Error{
+          fmt::format("module {}: nothing behind connector {}", module.id.value, ownConnector)};
     }
     partner = indexOf(neighbour->id);
     partnerConnector = neighbour->orientation.ownConnector(geometry::oppositeDirection(direction));
@@ -292,9 +299,10 @@ Status Simulator::compress(uint32_t index, int ownPiston) {
                              module.id.value, ownPiston)};
   }
   if (state.piston >= 0) {
-    return Error{fmt::format("module {}: cannot compress piston {}: piston {} is not at rest "
-                             "(only one piston at a time, paper section III.B)",
-                             module.id.value, ownPiston, state.piston)};
+    return Error{
+        fmt::format("module {}: cannot compress piston {}: piston {} is not at rest "
+                    "(only one piston at a time, paper section III.B)",
+                    module.id.value, ownPiston, state.piston)};
   }
   state.piston = static_cast<int8_t>(ownPiston);
   state.phase = PistonPhase::kCompressing;
@@ -425,9 +433,8 @@ Status Simulator::startMotion(uint32_t index, const motion::Motion& request) {
     if (state.phase != PistonPhase::kCompressed ||
         blocker.orientation.worldAxis(state.piston) != d.firstAxis) {
       return Error{fmt::format(
-          "{}: module {} in cell {} {} must compress its piston along world axis {} first",
-          who, d.module.value, motion::toString(d.role), geometry::toString(d.cell),
-          d.firstAxis)};
+          "{}: module {} in cell {} {} must compress its piston along world axis {} first", who,
+          d.module.value, motion::toString(d.role), geometry::toString(d.cell), d.firstAxis)};
     }
   }
   for (const ActiveMotion& other : motions_) {
@@ -450,7 +457,8 @@ Status Simulator::startMotion(uint32_t index, const motion::Motion& request) {
                                                         : rule.front;
   const int towardsGoal = *geometry::directionOfOffset(rule.goalOffset);
   active.pivotOld = pivot->orientation.ownConnector(rule.mobileDirection);
-  active.mobileOld = mobile.orientation.ownConnector(geometry::oppositeDirection(rule.mobileDirection));
+  active.mobileOld =
+      mobile.orientation.ownConnector(geometry::oppositeDirection(rule.mobileDirection));
   active.pivotNew = pivot->orientation.ownConnector(towardsGoal);
   const int firstTurnAxis = geometry::oppositeAxis(rule.right);
   const int secondTurnAxis = *geometry::crossAxes(rule.up, active.goalAxis);
@@ -562,9 +570,9 @@ void Simulator::motionResume(int slot) {
     const motion::Rule& rule = *active.plan.rule;
     trace_->piston(now_, pivot.id, states_[active.pivot].piston, 1, 0, options_.quarterTurnTime);
     trace_->piston(now_, mobile.id, states_[active.mobile].piston, 1, 0, options_.quarterTurnTime);
-    const geometry::Vec3 hinge = (geometry::worldPosition(pivot.cell, s) +
-                                  geometry::worldPosition(active.plan.goal, s)) *
-                                 0.5;
+    const geometry::Vec3 hinge =
+        (geometry::worldPosition(pivot.cell, s) + geometry::worldPosition(active.plan.goal, s)) *
+        0.5;
     trace_->turn(now_, mobile.id,
                  geometry::axisVector(*geometry::crossAxes(rule.up, active.goalAxis)), hinge, 90.0,
                  options_.quarterTurnTime);
@@ -628,8 +636,8 @@ void Simulator::checkInvariants() {
   // Only the modules this event touched can have changed their pistons.
   for (const uint32_t i : touched_) {
     if (std::popcount(states_[i].compressedMask) > 1) {
-      return fail(fmt::format("module {} has two pistons compressed",
-                              world_.modules()[i].id.value));
+      return fail(
+          fmt::format("module {} has two pistons compressed", world_.modules()[i].id.value));
     }
   }
   for (const ActiveMotion& active : motions_) {
@@ -640,8 +648,8 @@ void Simulator::checkInvariants() {
     const int pivotConnector = active.switched ? active.pivotNew : active.pivotOld;
     const int mobileConnector = active.switched ? active.mobileNew : active.mobileOld;
     if (!(pivot.latches & bit(pivotConnector)) || !(mobile.latches & bit(mobileConnector))) {
-      return fail(fmt::format("mobile {} is not latched to its pivot {}",
-                                     mobile.id.value, pivot.id.value));
+      return fail(
+          fmt::format("mobile {} is not latched to its pivot {}", mobile.id.value, pivot.id.value));
     }
     // The path stays clear: every deforming module keeps the piston its rule asks for.
     for (const motion::Deformation& d : active.plan.deformations) {
@@ -652,17 +660,17 @@ void Simulator::checkInvariants() {
       const Module& blocker = world_.modules()[index];
       if (state.piston < 0 || state.phase == PistonPhase::kReleasing ||
           blocker.orientation.worldAxis(state.piston) != axis) {
-        return fail(fmt::format("module {} in cell {} {} let go of its piston along "
-                                       "axis {} while mobile {} passes",
-                                       d.module.value, motion::toString(d.role),
-                                       geometry::toString(d.cell), axis, mobile.id.value));
+        return fail(
+            fmt::format("module {} in cell {} {} let go of its piston along "
+                        "axis {} while mobile {} passes",
+                        d.module.value, motion::toString(d.role), geometry::toString(d.cell), axis,
+                        mobile.id.value));
       }
     }
     // Nothing else enters the goal while the mobile is on its way.
     if (const Module* other = world_.moduleAt(active.plan.goal)) {
-      return fail(fmt::format("module {} entered the goal {} of mobile {}",
-                                     other->id.value, geometry::toString(active.plan.goal),
-                                     mobile.id.value));
+      return fail(fmt::format("module {} entered the goal {} of mobile {}", other->id.value,
+                              geometry::toString(active.plan.goal), mobile.id.value));
     }
   }
 }

@@ -31,9 +31,13 @@ std::string vec(const Vec3& v) {
 }
 
 // A JSON string literal, escaped.
-std::string quoted(const std::string& text) { return nlohmann::json(text).dump(); }
+std::string quoted(const std::string& text) {
+  return nlohmann::json(text).dump();
+}
 
-std::string seconds(program::Time t) { return number(double(t) / program::kSecond); }
+std::string seconds(program::Time t) {
+  return number(double(t) / program::kSecond);
+}
 
 std::string partJson(const datom::Part& part, int index) {
   static constexpr const char* kKinds[] = {"core", "piston", "link", "connector"};
@@ -76,8 +80,8 @@ void TraceRecorder::header(const world::World& world, const std::string& descrip
   for (int code = 0; code < geometry::Orientation::kCount; ++code) {
     const auto o = *geometry::Orientation::fromCode(code);
     const Vec3 x = o.apply({1, 0, 0}), y = o.apply({0, 1, 0}), z = o.apply({0, 0, 1});
-    fmt::format_to(out, "{}[{},{},{}]", code ? "," : "", vec({x.x, y.x, z.x}),
-                   vec({x.y, y.y, z.y}), vec({x.z, y.z, z.z}));
+    fmt::format_to(out, "{}[{},{},{}]", code ? "," : "", vec({x.x, y.x, z.x}), vec({x.y, y.y, z.y}),
+                   vec({x.z, y.z, z.z}));
   }
   text_ += "],";
 
@@ -126,8 +130,8 @@ void TraceRecorder::header(const world::World& world, const std::string& descrip
                    "{}{{\"id\":{},\"cell\":[{},{},{}],\"pos\":{},\"o\":{},\"rgb\":[{},{},{}],"
                    "\"latches\":{}}}",
                    first ? "" : ",\n", m.id.value, m.cell.x, m.cell.y, m.cell.z,
-                   vec(geometry::worldPosition(m.cell, spacing())), m.orientation.code(),
-                   m.color.r, m.color.g, m.color.b, m.latches);
+                   vec(geometry::worldPosition(m.cell, spacing())), m.orientation.code(), m.color.r,
+                   m.color.g, m.color.b, m.latches);
     first = false;
   }
   text_ += "]}\n";
@@ -142,10 +146,10 @@ void TraceRecorder::piston(program::Time t, world::ModuleId module, int ownPisto
 
 void TraceRecorder::turn(program::Time t, world::ModuleId module, const Vec3& axis,
                          const Vec3& centre, double degrees, program::Time duration) {
-  fmt::format_to(std::back_inserter(text_),
-                 "{{\"t\":{},\"turn\":{{\"m\":{},\"axis\":{},\"centre\":{},\"deg\":{},\"d\":{}}}}}\n",
-                 seconds(t), module.value, vec(axis), vec(centre), number(degrees),
-                 seconds(duration));
+  fmt::format_to(
+      std::back_inserter(text_),
+      "{{\"t\":{},\"turn\":{{\"m\":{},\"axis\":{},\"centre\":{},\"deg\":{},\"d\":{}}}}}\n",
+      seconds(t), module.value, vec(axis), vec(centre), number(degrees), seconds(duration));
 }
 
 void TraceRecorder::place(program::Time t, world::ModuleId module, const geometry::Cell& cell,
@@ -164,8 +168,9 @@ void TraceRecorder::latch(program::Time t, world::ModuleId a, int connectorA, wo
 }
 
 void TraceRecorder::color(program::Time t, world::ModuleId module, world::Color color) {
-  fmt::format_to(std::back_inserter(text_), "{{\"t\":{},\"color\":{{\"m\":{},\"rgb\":[{},{},{}]}}}}\n",
-                 seconds(t), module.value, color.r, color.g, color.b);
+  fmt::format_to(std::back_inserter(text_),
+                 "{{\"t\":{},\"color\":{{\"m\":{},\"rgb\":[{},{},{}]}}}}\n", seconds(t),
+                 module.value, color.r, color.g, color.b);
 }
 
 void TraceRecorder::note(program::Time t, const std::string& text) {

@@ -34,8 +34,8 @@ class TraceRecorder {
             const geometry::Vec3& centre, double degrees, program::Time duration);
   void place(program::Time t, world::ModuleId module, const geometry::Cell& cell,
              geometry::Orientation orientation);
-  void latch(program::Time t, world::ModuleId a, int connectorA, world::ModuleId b,
-             int connectorB, bool latched);
+  void latch(program::Time t, world::ModuleId a, int connectorA, world::ModuleId b, int connectorB,
+             bool latched);
   void color(program::Time t, world::ModuleId module, world::Color color);
   // A free-form marker the viewer shows on its timeline (e.g. "motion 3 starts").
   void note(program::Time t, const std::string& text);

@@ -27,11 +27,14 @@ bool isPackable(const geometry::Cell& cell) {
 }
 
 uint64_t packCell(const geometry::Cell& cell) {
-  return (static_cast<uint64_t>(cell.x) & kMask) | ((static_cast<uint64_t>(cell.y) & kMask) << kBits) |
+  return (static_cast<uint64_t>(cell.x) & kMask) |
+         ((static_cast<uint64_t>(cell.y) & kMask) << kBits) |
          ((static_cast<uint64_t>(cell.z) & kMask) << (2 * kBits));
 }
 
-size_t CellIndex::slotOf(uint64_t key) const { return mix(key) & (slots_.size() - 1); }
+size_t CellIndex::slotOf(uint64_t key) const {
+  return mix(key) & (slots_.size() - 1);
+}
 
 std::optional<uint32_t> CellIndex::find(uint64_t key) const {
   if (slots_.empty()) return std::nullopt;

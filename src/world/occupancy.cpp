@@ -39,7 +39,9 @@ void Occupancy::erase(const geometry::Cell& cell) {
   }
 }
 
-void Occupancy::clear() { *this = Occupancy(); }
+void Occupancy::clear() {
+  *this = Occupancy();
+}
 
 size_t Occupancy::memoryBytes() const {
   return dense_.capacity() * sizeof(uint32_t) + sparseIndex_.memoryBytes();
@@ -88,9 +90,9 @@ void Occupancy::growToInclude(const geometry::Cell& cell) {
   for (int32_t z = 0; z < oldBox.nz; ++z) {
     for (int32_t y = 0; y < oldBox.ny; ++y) {
       const size_t from = (size_t(z) * oldBox.ny + y) * oldBox.nx;
-      const size_t to = ((size_t(z + oldBox.z0 - box_.z0)) * box_.ny + (y + oldBox.y0 - box_.y0)) *
-                            box_.nx +
-                        (oldBox.x0 - box_.x0);
+      const size_t to =
+          ((size_t(z + oldBox.z0 - box_.z0)) * box_.ny + (y + oldBox.y0 - box_.y0)) * box_.nx +
+          (oldBox.x0 - box_.x0);
       std::copy_n(old.begin() + from, oldBox.nx, dense_.begin() + to);
     }
   }

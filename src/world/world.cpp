@@ -99,7 +99,8 @@ void World::latchAllNeighbours() {
   for (Module& module : modules_) {
     module.latches = 0;
     for (int d = 0; d < geometry::kDirectionCount; ++d) {
-      if (neighbour(module, d)) module.latches |= uint16_t(1u << module.orientation.ownConnector(d));
+      if (neighbour(module, d))
+        module.latches |= uint16_t(1u << module.orientation.ownConnector(d));
     }
   }
 }
@@ -130,11 +131,12 @@ bool World::isLatched(const Module& module, int direction) const {
   return (module.latches >> module.orientation.ownConnector(direction)) & 1u;
 }
 
-ModuleId World::nextFreeId() const { return ModuleId{maxId_ + 1}; }
+ModuleId World::nextFreeId() const {
+  return ModuleId{maxId_ + 1};
+}
 
 size_t World::memoryBytes() const {
-  return modules_.capacity() * sizeof(Module) + occupancy_.memoryBytes() +
-         indexById_.memoryBytes();
+  return modules_.capacity() * sizeof(Module) + occupancy_.memoryBytes() + indexById_.memoryBytes();
 }
 
 }  // namespace datomsim::world

@@ -37,7 +37,7 @@ export class View3D {
     this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     this.renderer.shadowMap.enabled = true;
-    this.renderer.shadowMap.type = THREE.PCFSoftShadowMap;
+    this.renderer.shadowMap.type = THREE.PCFShadowMap;
     container.appendChild(this.renderer.domElement);
     this.labelRenderer = new CSS2DRenderer();
     this.labelRenderer.domElement.className = 'dv-labels';
@@ -291,7 +291,7 @@ export class View3D {
     const fov = THREE.MathUtils.degToRad(this.camera.fov);
     const fitHeight = sphere.radius / Math.sin(fov / 2);
     const fitWidth = fitHeight / Math.min(1, this.camera.aspect);
-    const distance = Math.max(fitHeight, fitWidth) * 0.92;
+    const distance = Math.max(fitHeight, fitWidth) * 0.78;
     const direction = new THREE.Vector3(-0.45, -1.0, 0.85).normalize();
     this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
     this.camera.near = Math.max(0.01, distance / 200);

@@ -27,7 +27,9 @@ std::vector<std::pair<Cell, int>> reachDistances(world::World world, const Cell&
   return map->sorted();
 }
 
-world::World paperScene(int hole) { return std::move(*scene::paperArch(hole)); }
+world::World paperScene(int hole) {
+  return std::move(*scene::paperArch(hole));
+}
 
 TEST(PaperExperiment, DistributedGradientEqualsReachOnBothArchScenes) {
   for (const int hole : {2, 1}) {
@@ -37,8 +39,8 @@ TEST(PaperExperiment, DistributedGradientEqualsReachOnBothArchScenes) {
       request.simulation.rules.attachment = attachment;
       const auto run = experiment::runProgram(paperScene(hole), table(), request);
       ASSERT_TRUE(run.ok()) << run.error();
-      EXPECT_EQ(run->distances, reachDistances(paperScene(hole), request.goal,
-                                               request.simulation.rules))
+      EXPECT_EQ(run->distances,
+                reachDistances(paperScene(hole), request.goal, request.simulation.rules))
           << "hole " << hole;
       EXPECT_GT(run->statistics.messagesByType.at("DistanceMsg"), 0u);
     }

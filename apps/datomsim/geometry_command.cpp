@@ -1,0 +1,66 @@
+// `geometry`: the dimensions of a Datom and, at a compression fraction, its joint angles.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "datom/dimensions.h"
+#include "datom/linkage.h"
+
+namespace datomsim::app {
+
+void addGeometryCommand(CLI::App& app) {
+  struct Arguments {
+    double radius = 1.0;
+    double thickness = 0.0;
+    std::optional<double> fraction;
+    bool json = false;
+  };
+  auto args = std::make_shared<Arguments>();
+  CLI::App* command = app.add_subcommand(
+      "geometry", "Dimensions of a Datom from its radius and thickness (paper, section III)");
+  command
+      ->add_option("--radius", args->radius,
+                   "Radius r: half the distance between opposite "
+                   "connectors")
+      ->capture_default_str();
+  command->add_option("--thickness", args->thickness, "Thickness t of the moving parts")
+      ->capture_default_str();
+  command->add_option("--fraction", args->fraction,
+                      "Also the joint angles (degrees) at this compression fraction, 0..1");
+  command->add_flag("--json", args->json, "Print one JSON object");
+  command->callback([args] {
+    const datom::Dimensions d = unwrap(datom::dimensionsFor(args->radius, args->thickness));
+    nlohmann::ordered_json out = {
+        {"r", d.radius()},
+        {"t", d.thickness()},
+        {"c", d.connectorWidth()},
+        {"e", d.linkLength()},
+        {"a", d.amplitude()},
+        {"r_prime", d.correctedRadius()},
+        {"c_prime", d.correctedConnectorWidth()},
+        {"e_prime", d.correctedLinkLength()},
+        {"t_max", d.maxThickness()},
+        {"core_edge", d.coreEdge()},
+    };
+    if (args->fraction) {
+      const datom::Linkage linkage = unwrap(datom::solveLinkage(d, *args->fraction));
+      out["fraction"] = linkage.fraction;
+      out["travel"] = linkage.travel;
+      out["q0"] = linkage.angles.q0;
+      out["q1"] = linkage.angles.q1;
+      out["p0"] = linkage.angles.p0;
+      out["connector_turn"] = linkage.connectorTurn;
+    }
+    if (args->json) {
+      fmt::print("{}\n", out.dump());
+      return;
+    }
+    for (const auto& [key, value] : out.items()) {
+      fmt::print("{:>15} {:.6f}\n", key, value.get<double>());
+    }
+  });
+}
+
+}  // namespace datomsim::app

@@ -1,0 +1,89 @@
+// `run`: a module program on a scene, in the discrete-event simulator.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "experiment/run.h"
+#include "io/scene_file.h"
+
+namespace datomsim::app {
+
+std::string runJson(const std::string& program, const experiment::RunResult& result) {
+  nlohmann::ordered_json out;
+  if (program == "gradient") {
+    // Exactly as `reach` writes its distances.
+    nlohmann::ordered_json distances = nlohmann::ordered_json::array();
+    for (const auto& [cell, d] : result.distances) distances.push_back({cell.x, cell.y, cell.z, d});
+    out["distances"] = std::move(distances);
+  } else {
+    nlohmann::ordered_json path = nlohmann::ordered_json::array();
+    for (const geometry::Cell& cell : result.path) path.push_back({cell.x, cell.y, cell.z});
+    out["path"] = std::move(path);
+    out["motions"] = result.statistics.motions;
+  }
+  nlohmann::ordered_json messages = nlohmann::ordered_json::object();
+  for (const auto& [type, count] : result.statistics.messagesByType) messages[type] = count;
+  out["messages"] = std::move(messages);
+  out["events"] = result.statistics.events();
+  out["sim_time_s"] = double(result.statistics.simulatedTime) / program::kSecond;
+  return out.dump() + "\n";
+}
+
+void addRunCommand(CLI::App& app) {
+  struct Arguments {
+    std::string scene, program, goal, start, rules = "paper", attachment = "on", out, trace;
+    uint64_t seed = 1;
+    double delayMs = 10, jitterMs = 0;
+  };
+  auto args = std::make_shared<Arguments>();
+  CLI::App* command =
+      app.add_subcommand("run", "Run a module program on a scene in the discrete-event simulator");
+  command->add_option("scene", args->scene, "Scene file (.xml or .json)")->required();
+  command->add_option("--program", args->program, "gradient or follow-gradient")
+      ->required()
+      ->check(CLI::IsMember({"gradient", "follow-gradient"}));
+  command->add_option("--goal", args->goal, "Goal cell x,y,z")->required();
+  command->add_option("--start", args->start,
+                      "The mobile's start x,y,z: the module there, else the one at the goal moved "
+                      "there, else a new module");
+  command->add_option("--rules", args->rules, "paper or strict")
+      ->check(CLI::IsMember({"paper", "strict"}))
+      ->capture_default_str();
+  command->add_option("--attachment", args->attachment, "on or off")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  command->add_option("--seed", args->seed, "Seed of the modules' random streams and delays")
+      ->capture_default_str();
+  command->add_option("--delay-ms", args->delayMs, "Message delay in milliseconds")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command
+      ->add_option("--jitter-ms", args->jitterMs,
+                   "Extra random message delay, uniform in [0, jitter], in milliseconds")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  command->add_option("--out", args->out, "Write the JSON result here instead of standard output");
+  command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
+  command->callback([args] {
+    experiment::RunRequest request;
+    request.program = args->program;
+    request.goal = parseCell("--goal", args->goal);
+    if (!args->start.empty()) request.start = parseCell("--start", args->start);
+    request.simulation.rules = parseRuleOptions(args->rules, args->attachment);
+    request.simulation.seed = args->seed;
+    request.simulation.messageDelay = program::Time(args->delayMs * program::kMillisecond);
+    request.simulation.messageJitter = program::Time(args->jitterMs * program::kMillisecond);
+    request.trace = !args->trace.empty();
+    request.description = fmt::format("{} on {}", args->program, args->scene);
+    io::Scene scene = unwrap(io::readScene(args->scene));
+    const motion::RuleTable table;
+    const experiment::RunResult result =
+        unwrap(experiment::runProgram(std::move(scene.world), table, request));
+    if (request.trace) writeOutput(args->trace, result.trace);
+    writeOutput(args->out, runJson(args->program, result));
+  });
+}
+
+}  // namespace datomsim::app

@@ -1,0 +1,394 @@
+// The viewer application: controls, playback and the module panel around a View3D.
+//
+// Playback only maps wall-clock time to trace time (times the speed); each picture is
+// timeline.frameAt(t), so the speed, pauses and seeks never change what is shown at a given t.
+import { PART_SCHEMES, rgbToCss } from './colors.js';
+import { Kinematics } from './kinematics.js';
+import { Timeline } from './timeline.js';
+import { nextChangeTime, previousChangeTime } from './trace.js';
+import { View3D } from './view3d.js';
+
+export const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 4, 8, 16, 32];
+
+function element(tag, attributes = {}, children = []) {
+  const node = document.createElement(tag);
+  for (const [key, value] of Object.entries(attributes)) {
+    if (key === 'text') node.textContent = value;
+    else if (key === 'className') node.className = value;
+    else node.setAttribute(key, value);
+  }
+  for (const child of children) node.appendChild(child);
+  return node;
+}
+
+function button(label, title, onClick) {
+  const b = element('button', { type: 'button', title, 'aria-label': title });
+  if (ICONS[label]) b.innerHTML = ICONS[label];
+  else b.textContent = label;
+  b.addEventListener('click', onClick);
+  return b;
+}
+
+// Transport icons as inline SVG: system fonts often lack the media control characters.
+const ICONS = {
+  start: '<svg viewBox="0 0 16 16"><path d="M3 3h2v10H3zM13 3v10L6 8z"/></svg>',
+  back: '<svg viewBox="0 0 16 16"><path d="M4 3h2v10H4zM13 3v10L7 8z"/></svg>',
+  play: '<svg viewBox="0 0 16 16"><path d="M4 2.5v11L13 8z"/></svg>',
+  pause: '<svg viewBox="0 0 16 16"><path d="M4 3h3v10H4zM9 3h3v10H9z"/></svg>',
+  step: '<svg viewBox="0 0 16 16"><path d="M3 3v10l6-5zM10 3h2v10h-2z"/></svg>',
+  end: '<svg viewBox="0 0 16 16"><path d="M3 3v10l7-5zM11 3h2v10h-2z"/></svg>',
+};
+
+function checkbox(label, checked, onChange) {
+  const input = element('input', { type: 'checkbox' });
+  input.checked = checked;
+  input.addEventListener('change', () => onChange(input.checked));
+  const wrapper = element('label', { className: 'dv-toggle' }, [input, document.createTextNode(label)]);
+  return { wrapper, input };
+}
+
+export function formatTime(t) {
+  return `${t.toFixed(2)} s`;
+}
+
+function formatVector(v) {
+  return `(${v.map((x) => Number(x.toFixed(3))).join(', ')})`;
+}
+
+export class App {
+  constructor(root, trace, overlay) {
+    this.root = root;
+    this.trace = trace;
+    this.timeline = new Timeline(trace);
+    this.kinematics = new Kinematics(trace.header);
+    this.duration = trace.duration;
+    this.time = 0;
+    this.speed = 1;
+    this.playing = false;
+    this.lastWall = null;
+
+    this.buildDom();
+    this.view = new View3D(this.canvasHolder, this.timeline, this.kinematics, overlay);
+    this.view.setOverlayVisible(true);
+    this.overlayToggle.wrapper.hidden = !overlay;
+    this.installInput();
+    this.seek(0);
+    this.tick = this.tick.bind(this);
+    requestAnimationFrame(this.tick);
+  }
+
+  buildDom() {
+    const header = this.trace.header;
+    this.canvasHolder = element('div', { className: 'dv-canvas' });
+    const title = header.description || 'datomsim trace';
+    this.noteLine = element('div', { className: 'dv-note' });
+    this.top = element('div', { className: 'dv-top' }, [
+      element('div', { className: 'dv-title', text: title }),
+      element('div', {
+        className: 'dv-subtitle',
+        text: `${header.modules.length} modules, r = ${header.dimensions.r}, t = ${header.dimensions.t ?? 0}` +
+          (this.duration > 0 ? `, ${formatTime(this.duration)}` : ', scene (no changes)'),
+      }),
+      this.noteLine,
+    ]);
+
+    // Playback controls.
+    this.playButton = button('play', 'Play / pause (space)', () => this.togglePlay());
+    this.slider = element('input', {
+      type: 'range',
+      min: '0',
+      max: String(this.duration),
+      step: 'any',
+      value: '0',
+      className: 'dv-slider',
+      'aria-label': 'time',
+    });
+    this.slider.addEventListener('input', () => {
+      this.pause();
+      this.seek(Number(this.slider.value));
+    });
+    this.timeLabel = element('span', { className: 'dv-time' });
+    this.speedSelect = element('select', { title: 'Playing speed (trace seconds per second)' });
+    for (const s of SPEEDS) {
+      const option = element('option', { value: String(s), text: `${s}\u00D7` });
+      if (s === 1) option.selected = true;
+      this.speedSelect.appendChild(option);
+    }
+    this.speedSelect.addEventListener('change', () => {
+      this.speed = Number(this.speedSelect.value);
+    });
+
+    const markers = element('div', { className: 'dv-markers' });
+    if (this.duration > 0) {
+      for (const note of this.trace.notes) {
+        const tick = element('div', { className: 'dv-marker', title: `${formatTime(note.t)}: ${note.text}` });
+        tick.style.left = `${(100 * note.t) / this.duration}%`;
+        markers.appendChild(tick);
+      }
+    }
+    const sliderBox = element('div', { className: 'dv-slider-box' }, [this.slider, markers]);
+
+    this.labelsToggle = checkbox('labels', false, (on) => {
+      this.view.setLabelsVisible(on);
+      this.view.render();
+    });
+    this.overlayToggle = checkbox('distances', true, (on) => {
+      this.view.setOverlayVisible(on);
+      this.view.render();
+    });
+    this.latchesToggle = checkbox('latches', false, (on) => {
+      this.view.showLatches = on;
+      this.redraw();
+    });
+    this.schemeSelect = element('select', { title: 'Connector colour: red as in the paper, or a dark tint of the module' });
+    for (const scheme of PART_SCHEMES) {
+      this.schemeSelect.appendChild(element('option', { value: scheme, text: `connectors: ${scheme === 'paper' ? 'red' : 'tint'}` }));
+    }
+    this.schemeSelect.addEventListener('change', () => {
+      this.view.scheme = this.schemeSelect.value;
+      this.redraw();
+    });
+
+    const disabled = this.duration <= 0;
+    const transport = [
+      button('start', 'Start (Home)', () => this.pauseAndSeek(0)),
+      button('back', 'Previous change (\u2190)', () => this.stepBack()),
+      this.playButton,
+      button('step', 'Next change (\u2192)', () => this.step()),
+      button('end', 'End (End)', () => this.pauseAndSeek(this.duration)),
+    ];
+    if (disabled) {
+      for (const b of transport) b.disabled = true;
+      this.slider.disabled = true;
+    }
+    this.bar = element('div', { className: 'dv-bar' }, [
+      element('div', { className: 'dv-transport' }, transport),
+      sliderBox,
+      this.timeLabel,
+      this.speedSelect,
+      element('div', { className: 'dv-toggles' }, [
+        this.labelsToggle.wrapper,
+        this.overlayToggle.wrapper,
+        this.latchesToggle.wrapper,
+        this.schemeSelect,
+        button('fit', 'Fit the scene (F)', () => this.view.fit()),
+      ]),
+    ]);
+
+    this.panel = element('div', { className: 'dv-panel' });
+    this.panel.hidden = true;
+    this.help = element('div', {
+      className: 'dv-help',
+      text: 'drag: orbit \u00B7 right-drag: pan \u00B7 wheel: zoom \u00B7 click: module \u00B7 space: play \u00B7 \u2190 \u2192: step \u00B7 F: fit \u00B7 L: labels',
+    });
+    this.root.append(this.canvasHolder, this.top, this.panel, this.help, this.bar);
+  }
+
+  installInput() {
+    const canvas = this.view.renderer.domElement;
+    let down = null;
+    canvas.addEventListener('pointerdown', (event) => {
+      down = { x: event.clientX, y: event.clientY };
+    });
+    canvas.addEventListener('pointerup', (event) => {
+      if (!down) return;
+      const moved = Math.hypot(event.clientX - down.x, event.clientY - down.y);
+      down = null;
+      if (moved > 4) return; // a drag of the camera, not a click
+      this.select(this.view.pick(event.clientX, event.clientY));
+    });
+    window.addEventListener('resize', () => this.view.resize());
+    window.addEventListener('keydown', (event) => {
+      if (event.target instanceof HTMLInputElement && event.target.type !== 'range' && event.target.type !== 'checkbox') return;
+      if (event.target instanceof HTMLSelectElement) return;
+      switch (event.key) {
+        case ' ':
+          this.togglePlay();
+          break;
+        case 'ArrowRight':
+          this.step();
+          break;
+        case 'ArrowLeft':
+          this.stepBack();
+          break;
+        case 'Home':
+          this.pauseAndSeek(0);
+          break;
+        case 'End':
+          this.pauseAndSeek(this.duration);
+          break;
+        case 'f':
+        case 'F':
+          this.view.fit();
+          return;
+        case 'l':
+        case 'L':
+          this.labelsToggle.input.checked = !this.labelsToggle.input.checked;
+          this.view.setLabelsVisible(this.labelsToggle.input.checked);
+          this.view.render();
+          return;
+        case 'Escape':
+          this.select(-1);
+          return;
+        default:
+          return;
+      }
+      event.preventDefault();
+    });
+  }
+
+  // Shows the picture at trace time t (clamped to the trace), computed from the trace alone.
+  seek(t) {
+    this.time = Math.min(this.duration, Math.max(0, t));
+    this.redraw();
+  }
+
+  redraw() {
+    const frame = this.timeline.frameAt(this.time);
+    this.frame = frame;
+    this.view.update(frame);
+    this.view.render();
+    this.slider.value = String(this.time);
+    this.timeLabel.textContent = `${formatTime(this.time)} / ${formatTime(this.duration)}`;
+    this.noteLine.textContent = frame.note ? `${formatTime(frame.note.t)}: ${frame.note.text}` : '';
+    this.updatePanel();
+  }
+
+  pauseAndSeek(t) {
+    this.pause();
+    this.seek(t);
+  }
+
+  step() {
+    this.pause();
+    const next = nextChangeTime(this.trace.changeTimes, this.time);
+    if (next !== null) this.seek(next);
+  }
+
+  stepBack() {
+    this.pause();
+    const previous = previousChangeTime(this.trace.changeTimes, this.time);
+    if (previous !== null) this.seek(previous);
+  }
+
+  play() {
+    if (this.duration <= 0) return;
+    if (this.time >= this.duration) this.seek(0);
+    this.playing = true;
+    this.lastWall = null;
+    this.playButton.innerHTML = ICONS.pause;
+  }
+
+  pause() {
+    this.playing = false;
+    this.playButton.innerHTML = ICONS.play;
+  }
+
+  togglePlay() {
+    if (this.playing) this.pause();
+    else this.play();
+  }
+
+  tick(now) {
+    if (this.playing) {
+      if (this.lastWall !== null) {
+        const next = this.time + ((now - this.lastWall) / 1000) * this.speed;
+        if (next >= this.duration) {
+          this.seek(this.duration);
+          this.pause();
+        } else {
+          this.seek(next);
+        }
+      }
+      this.lastWall = now;
+    }
+    requestAnimationFrame(this.tick);
+  }
+
+  select(index) {
+    this.selectedIndex = index;
+    this.view.select(index);
+    this.redraw();
+  }
+
+  updatePanel() {
+    const index = this.selectedIndex ?? -1;
+    if (index < 0) {
+      this.panel.hidden = true;
+      return;
+    }
+    const m = this.frame.modules[index];
+    const rows = [
+      ['module', String(m.id)],
+      ['cell', m.inTransit ? `${m.cell.join(', ')} (moving)` : m.cell.join(', ')],
+      ['orientation', String(m.o)],
+      ['position', formatVector(m.position.toArray())],
+      ['piston', m.piston < 0 ? 'all at rest' : `${m.piston} at ${(100 * m.fraction).toFixed(0)} %`],
+    ];
+    const latched = [];
+    for (let c = 0; c < 12; ++c) {
+      if (!(m.latches & (1 << c))) continue;
+      const partner = this.timeline.latchPartner(this.frame, index, c);
+      latched.push(partner ? `${c} \u2192 ${partner.m}:${partner.c}` : String(c));
+    }
+    rows.push(['latches', latched.length ? latched.join(', ') : 'none']);
+    const swatch = element('span', { className: 'dv-swatch' });
+    swatch.style.background = rgbToCss(m.rgb);
+    this.panel.replaceChildren(
+      element('div', { className: 'dv-panel-title' }, [swatch, document.createTextNode(`Datom ${m.id}`)]),
+      element(
+        'table',
+        {},
+        rows.map(([key, value]) =>
+          element('tr', {}, [element('th', { text: key }), element('td', { text: value })]),
+        ),
+      ),
+      button('close', 'Deselect (Esc)', () => this.select(-1)),
+    );
+    this.panel.hidden = false;
+  }
+
+  // What the end-to-end test and the console can drive.
+  api() {
+    return {
+      ready: true,
+      duration: this.duration,
+      changeTimes: this.trace.changeTimes,
+      moduleCount: this.trace.header.modules.length,
+      time: () => this.time,
+      seek: (t) => this.pauseAndSeek(t),
+      step: () => this.step(),
+      stepBack: () => this.stepBack(),
+      play: () => this.play(),
+      pause: () => this.pause(),
+      setSpeed: (s) => {
+        this.speed = s;
+        this.speedSelect.value = String(s);
+      },
+      selectId: (id) => this.select(this.timeline.indexOfId.get(id) ?? -1),
+      selectedInfo: () => (this.panel.hidden ? null : this.panel.innerText),
+      screenPositionOf: (id) => this.view.screenPositionOf(this.timeline.indexOfId.get(id)),
+      setLabels: (on) => {
+        this.labelsToggle.input.checked = on;
+        this.view.setLabelsVisible(on);
+        this.view.render();
+      },
+      setLatches: (on) => {
+        this.latchesToggle.input.checked = on;
+        this.view.showLatches = on;
+        this.redraw();
+      },
+      fit: () => this.view.fit(),
+      camera: (position, target) => {
+        this.view.camera.position.set(...position);
+        this.view.controls.target.set(...target);
+        this.view.controls.update();
+        this.view.render();
+      },
+      modulePose: (id) => {
+        const m = this.frame.modules[this.timeline.indexOfId.get(id)];
+        return { position: m.position.toArray(), piston: m.piston, fraction: m.fraction };
+      },
+    };
+  }
+}

@@ -1,0 +1,45 @@
+// The viewer's style sheet, injected by main.js so that the page needs nothing but the bundle.
+export const STYLE = `
+html, body { margin: 0; height: 100%; overflow: hidden; background: #e9edf2;
+  font: 13px/1.35 system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans", sans-serif; color: #1d2430; }
+#datomsim-viewer { position: fixed; inset: 0; }
+.dv-canvas { position: absolute; inset: 0 0 52px 0; }
+.dv-canvas canvas { display: block; }
+.dv-labels { position: absolute; top: 0; left: 0; pointer-events: none; }
+.dv-label { font-size: 11px; font-weight: 600; color: #fff; background: rgba(20, 28, 40, 0.72);
+  padding: 0 4px; border-radius: 3px; }
+.dv-top { position: absolute; top: 8px; left: 10px; right: 300px; pointer-events: none;
+  text-shadow: 0 0 3px #fff, 0 0 3px #fff; }
+.dv-title { font-weight: 600; font-size: 14px; white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
+.dv-subtitle { color: #4a5566; }
+.dv-note { margin-top: 2px; color: #8a1c1c; min-height: 1.35em; }
+.dv-help { position: absolute; right: 10px; bottom: 58px; color: #5a6474; font-size: 11px;
+  pointer-events: none; text-shadow: 0 0 3px #fff; }
+.dv-bar { position: absolute; left: 0; right: 0; bottom: 0; height: 52px; display: flex;
+  align-items: center; gap: 10px; padding: 0 10px; box-sizing: border-box;
+  background: #fbfcfd; border-top: 1px solid #c9d0da; }
+.dv-bar button, .dv-bar select { font: inherit; height: 28px; border: 1px solid #b9c1cc;
+  background: #fff; border-radius: 4px; padding: 0 8px; cursor: pointer; }
+.dv-bar button:disabled { opacity: 0.4; cursor: default; }
+.dv-transport { display: flex; gap: 3px; }
+.dv-transport button { width: 34px; padding: 0; display: flex; align-items: center; justify-content: center; }
+.dv-transport svg { width: 14px; height: 14px; fill: #2a3340; }
+.dv-slider-box { position: relative; flex: 1; min-width: 120px; }
+.dv-slider { width: 100%; margin: 0; }
+.dv-markers { position: absolute; left: 7px; right: 7px; top: -7px; height: 6px; pointer-events: none; }
+.dv-marker { position: absolute; width: 2px; height: 6px; background: #b33; margin-left: -1px; }
+.dv-time { font-variant-numeric: tabular-nums; min-width: 120px; text-align: right; }
+.dv-toggles { display: flex; align-items: center; gap: 8px; }
+.dv-toggle { display: flex; align-items: center; gap: 3px; cursor: pointer; user-select: none; }
+.dv-panel { position: absolute; top: 8px; right: 10px; width: 270px; background: rgba(255, 255, 255, 0.94);
+  border: 1px solid #c9d0da; border-radius: 6px; padding: 8px 10px; box-shadow: 0 2px 8px rgba(0,0,0,0.12); }
+.dv-panel-title { font-weight: 600; font-size: 14px; margin-bottom: 4px; display: flex; align-items: center; gap: 6px; }
+.dv-swatch { display: inline-block; width: 14px; height: 14px; border: 1px solid #333; border-radius: 2px; }
+.dv-panel table { border-collapse: collapse; width: 100%; margin-bottom: 6px; }
+.dv-panel th { text-align: left; font-weight: normal; color: #5a6474; padding: 1px 8px 1px 0; vertical-align: top; white-space: nowrap; }
+.dv-panel td { padding: 1px 0; word-break: break-word; }
+.dv-panel button { font: inherit; border: 1px solid #b9c1cc; background: #fff; border-radius: 4px; cursor: pointer; }
+.dv-error { position: absolute; top: 20px; left: 20px; right: 20px; padding: 12px 16px; background: #fff0f0;
+  border: 1px solid #d33; color: #800; border-radius: 6px; white-space: pre-wrap; font-family: monospace; }
+.dv-open { position: absolute; top: 40%; left: 0; right: 0; text-align: center; font-size: 15px; }
+`;

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "io/atomic_file.h"
+#include "common/atomic_file.h"
 #include "render/distance_map.h"
 
 namespace datomsim::app {
@@ -16,7 +16,7 @@ void writeOutput(const std::string& path, const std::string& text) {
     std::fwrite(text.data(), 1, text.size(), stdout);
     return;
   }
-  check(io::writeFileAtomically(path, [&](std::FILE* file) -> Status {
+  check(writeFileAtomically(path, [&](std::FILE* file) -> Status {
     if (std::fwrite(text.data(), 1, text.size(), file) != text.size()) {
       return Error{"cannot write " + path};
     }

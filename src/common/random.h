@@ -1,20 +1,20 @@
-// A small portable random generator (SplitMix64): the same sequence on every platform and
-// standard library, which std::uniform_int_distribution does not promise.
+// SplitMix64 (Steele, Lea and Flood, 2014): a small random generator with the same sequence on
+// every platform and standard library, which std::uniform_int_distribution does not promise.
 #pragma once
 
 #include <cstdint>
 
 namespace datomsim {
 
-class Random {
+class SplitMix64 {
  public:
-  explicit Random(uint64_t seed) : state_(seed) {}
+  explicit SplitMix64(uint64_t seed) : state_(seed) {}
 
   // A stream for one consumer (a module, a generator) derived from a seed and a stream number,
   // independent of the order in which streams are created.
-  static Random stream(uint64_t seed, uint64_t stream) {
-    Random mixer(seed ^ (stream * 0xd1b54a32d192ed03ULL));
-    return Random(mixer.next());
+  static SplitMix64 stream(uint64_t seed, uint64_t stream) {
+    SplitMix64 mixer(seed ^ (stream * 0xd1b54a32d192ed03ULL));
+    return SplitMix64(mixer.next());
   }
 
   uint64_t next() {
@@ -24,12 +24,12 @@ class Random {
     return z ^ (z >> 31);
   }
 
-  // Uniform in [0, bound) for bound > 0, without modulo bias: draws above the largest multiple
-  // of bound are thrown away.
+  // Uniform in [0, bound) for bound > 0. Draws below 2^64 mod bound are thrown away, so that
+  // every result is equally likely.
   uint64_t below(uint64_t bound) {
-    const uint64_t limit = UINT64_MAX - UINT64_MAX % bound;
+    const uint64_t threshold = (0 - bound) % bound;
     uint64_t draw = next();
-    while (draw >= limit) draw = next();
+    while (draw < threshold) draw = next();
     return draw % bound;
   }
 
@@ -41,5 +41,8 @@ class Random {
  private:
   uint64_t state_;
 };
+
+// Module programs and generators draw from this one generator.
+using Random = SplitMix64;
 
 }  // namespace datomsim

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "io/atomic_file.h"
+#include "common/atomic_file.h"
 #include "io/json_scene.h"
 #include "io/visiblesim_xml.h"
 

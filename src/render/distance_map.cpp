@@ -13,8 +13,8 @@
 
 #include <fmt/format.h>
 
+#include "common/atomic_file.h"
 #include "geometry/lattice.h"
-#include "render/atomic_file.h"
 #include "render/colors.h"
 
 namespace datomsim::render {

@@ -4,8 +4,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "common/random.h"
 #include "geometry/lattice.h"
-#include "scene/split_mix64.h"
 #include "world/cell_index.h"
 
 namespace datomsim::scene {

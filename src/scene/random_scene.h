@@ -4,8 +4,8 @@
 // the start cell. A frontier list holds, in insertion order, every empty cell that may take the
 // next module: inside the world, below `maxHeight`, next to a module (12-neighbourhood), and
 // resting either on the ground (z = 0) or on a module below it (one of its 4 lower neighbours).
-// Each step draws an index i = rng.below(frontier size) with SplitMix64 (split_mix64.h), moves the
-// last frontier entry to i, places the module in the drawn cell, then appends its new candidate
+// Each step draws an index i = rng.below(frontier size) with SplitMix64 (common/random.h), moves
+// the last frontier entry to i, places the module in the drawn cell, then appends its new candidate
 // neighbours in direction order 0..11. With `randomOrientations`, one more draw below(24) gives
 // the orientation after each cell. Ids are 1, 2, 3... in growth order; all neighbours are latched.
 #pragma once

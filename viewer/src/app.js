@@ -172,6 +172,7 @@ export class App {
         this.latchesToggle.wrapper,
         this.schemeSelect,
         button('fit', 'Fit the scene (F)', () => this.view.fit()),
+        button('top', 'Seen from the top, as the paper\'s distance maps (T)', () => this.view.fit('top')),
       ]),
     ]);
 
@@ -179,7 +180,7 @@ export class App {
     this.panel.hidden = true;
     this.help = element('div', {
       className: 'dv-help',
-      text: 'drag: orbit \u00B7 right-drag: pan \u00B7 wheel: zoom \u00B7 click: module \u00B7 space: play \u00B7 \u2190 \u2192: step \u00B7 F: fit \u00B7 L: labels',
+      text: 'drag: orbit \u00B7 right-drag: pan \u00B7 wheel: zoom \u00B7 click: module \u00B7 space: play \u00B7 \u2190 \u2192: step \u00B7 F: fit \u00B7 T: top \u00B7 L: labels',
     });
     this.root.append(this.canvasHolder, this.top, this.panel, this.help, this.bar);
   }
@@ -220,6 +221,10 @@ export class App {
         case 'f':
         case 'F':
           this.view.fit();
+          return;
+        case 't':
+        case 'T':
+          this.view.fit('top');
           return;
         case 'l':
         case 'L':
@@ -378,7 +383,7 @@ export class App {
         this.view.showLatches = on;
         this.redraw();
       },
-      fit: () => this.view.fit(),
+      fit: (view) => this.view.fit(view),
       camera: (position, target) => {
         this.view.camera.position.set(...position);
         this.view.controls.target.set(...target);

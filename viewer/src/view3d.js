@@ -284,20 +284,47 @@ export class View3D {
     this.render();
   }
 
-  // Frames the whole scene from the front left, above, as the paper's figures look at it.
-  fit() {
+  // Frames the whole scene: from the front left and above, as the paper's figures look at it, or
+  // from the top (view = 'top'), as its distance maps do. The distance is the smallest at which
+  // every corner of the scene's box is inside the field of view.
+  fit(view = 'front') {
     const box = this.bounds();
-    const sphere = box.getBoundingSphere(new THREE.Sphere());
-    const fov = THREE.MathUtils.degToRad(this.camera.fov);
-    const fitHeight = sphere.radius / Math.sin(fov / 2);
-    const fitWidth = fitHeight / Math.min(1, this.camera.aspect);
-    const distance = Math.max(fitHeight, fitWidth) * 0.78;
-    const direction = new THREE.Vector3(-0.45, -1.0, 0.85).normalize();
-    this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
+    const centre = box.getCenter(new THREE.Vector3());
+    // Straight down would leave the orbit controls (z up) without a heading: tilt a little.
+    const forward =
+      view === 'top' ? new THREE.Vector3(0, 0.02, -1).normalize() : new THREE.Vector3(0.45, 1.0, -0.85).normalize();
+    const up = new THREE.Vector3(0, 0, 1);
+    const right = new THREE.Vector3().crossVectors(forward, up).normalize();
+    const trueUp = new THREE.Vector3().crossVectors(right, forward);
+    const tanV = Math.tan(THREE.MathUtils.degToRad(this.camera.fov) / 2);
+    const tanH = tanV * this.camera.aspect;
+    // Every module centre and overlay cell, with a module's radius around it, must be in view.
+    // For the eye at target - D forward with target = centre + a right + b up, a point at
+    // (x, y, z) in the camera frame is in view when |x - a| + r <= (z + D) tanH (and likewise for
+    // y): the smallest D and its a, b are closed forms of the extreme points.
+    const points = this.header.modules.map((m) => new THREE.Vector3(...m.pos)).concat(this.overlayCells);
+    if (points.length === 0) points.push(centre.clone());
+    let [plusX, minusX, plusY, minusY] = [-Infinity, -Infinity, -Infinity, -Infinity];
+    for (const point of points) {
+      const p = point.clone().sub(centre);
+      const x = p.dot(right);
+      const y = p.dot(trueUp);
+      const z = p.dot(forward);
+      plusX = Math.max(plusX, (x + this.radius) / tanH - z);
+      minusX = Math.max(minusX, (-x + this.radius) / tanH - z);
+      plusY = Math.max(plusY, (y + this.radius) / tanV - z);
+      minusY = Math.max(minusY, (-y + this.radius) / tanV - z);
+    }
+    const distance = 1.04 * Math.max((plusX + minusX) / 2, (plusY + minusY) / 2);
+    const target = centre
+      .clone()
+      .addScaledVector(right, (tanH * (plusX - minusX)) / 2)
+      .addScaledVector(trueUp, (tanV * (plusY - minusY)) / 2);
+    this.camera.position.copy(target).addScaledVector(forward, -distance);
     this.camera.near = Math.max(0.01, distance / 200);
     this.camera.far = distance * 10;
     this.camera.updateProjectionMatrix();
-    this.controls.target.copy(sphere.center);
+    this.controls.target.copy(target);
     this.controls.update();
     this.render();
   }

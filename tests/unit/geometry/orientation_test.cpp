@@ -11,7 +11,8 @@ namespace {
 
 std::vector<Orientation> all() {
   std::vector<Orientation> out;
-  for (int code = 0; code < Orientation::kCount; ++code) out.push_back(*Orientation::fromCode(code));
+  for (int code = 0; code < Orientation::kCount; ++code)
+    out.push_back(*Orientation::fromCode(code));
   return out;
 }
 

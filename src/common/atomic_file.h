@@ -9,10 +9,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <string_view>
 
 #include "common/result.h"
 
-namespace datomsim::io {
+namespace datomsim {
 
 // Calls `write` with a temporary file open for writing next to `target`, then renames it to
 // `target`. An error from `write`, or from any I/O step, leaves nothing behind. The error names
@@ -20,4 +21,7 @@ namespace datomsim::io {
 Status writeFileAtomically(const std::filesystem::path& target,
                            const std::function<Status(std::FILE*)>& write);
 
-}  // namespace datomsim::io
+// The same for bytes already in memory.
+Status writeFileAtomically(const std::filesystem::path& target, std::string_view bytes);
+
+}  // namespace datomsim

@@ -1,4 +1,4 @@
-#include "io/atomic_file.h"
+#include "common/atomic_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -8,7 +8,7 @@
 #include <cstring>
 #include <string>
 
-namespace datomsim::io {
+namespace datomsim {
 namespace {
 
 std::string systemError(int code) {
@@ -78,4 +78,13 @@ Status writeFileAtomically(const std::filesystem::path& target,
   return Ok{};
 }
 
-}  // namespace datomsim::io
+Status writeFileAtomically(const std::filesystem::path& target, std::string_view bytes) {
+  return writeFileAtomically(target, [&](std::FILE* file) -> Status {
+    if (std::fwrite(bytes.data(), 1, bytes.size(), file) != bytes.size()) {
+      return Error{"cannot write " + target.string() + ": " + systemError(errno)};
+    }
+    return Ok{};
+  });
+}
+
+}  // namespace datomsim

@@ -1,10 +1,10 @@
-#include "scene/split_mix64.h"
+#include "common/random.h"
 
 #include <gtest/gtest.h>
 
 #include <array>
 
-namespace datomsim::scene {
+namespace datomsim {
 namespace {
 
 TEST(SplitMix64, GivesTheReferenceSequence) {
@@ -30,4 +30,4 @@ TEST(SplitMix64, DrawsBelowABoundAndReachesEveryValue) {
 }
 
 }  // namespace
-}  // namespace datomsim::scene
+}  // namespace datomsim

@@ -1,4 +1,4 @@
-#include "render/atomic_file.h"
+#include "common/atomic_file.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -8,13 +8,13 @@
 #include <sstream>
 #include <string>
 
-namespace datomsim::render {
+namespace datomsim {
 namespace {
 
 namespace fs = std::filesystem;
 
 // A fresh empty directory per test, removed afterwards.
-class AtomicFile : public ::testing::Test {
+class AtomicBytes : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -39,7 +39,7 @@ class AtomicFile : public ::testing::Test {
   fs::path directory_;
 };
 
-TEST_F(AtomicFile, WritesTheBytesReadableByAll) {
+TEST_F(AtomicBytes, WritesTheBytesReadableByAll) {
   const fs::path path = directory_ / "a.bin";
   const std::string bytes("one\0two", 7);
   ASSERT_TRUE(writeFileAtomically(path, bytes).ok());
@@ -48,7 +48,7 @@ TEST_F(AtomicFile, WritesTheBytesReadableByAll) {
   EXPECT_EQ(entries(), 1u);
 }
 
-TEST_F(AtomicFile, ReplacesAnExistingFile) {
+TEST_F(AtomicBytes, ReplacesAnExistingFile) {
   const fs::path path = directory_ / "a.txt";
   ASSERT_TRUE(writeFileAtomically(path, "a much longer first version").ok());
   ASSERT_TRUE(writeFileAtomically(path, "second").ok());
@@ -56,7 +56,7 @@ TEST_F(AtomicFile, ReplacesAnExistingFile) {
   EXPECT_EQ(entries(), 1u);
 }
 
-TEST_F(AtomicFile, RefusesAMissingDirectoryNamingThePath) {
+TEST_F(AtomicBytes, RefusesAMissingDirectoryNamingThePath) {
   const fs::path path = directory_ / "missing" / "a.txt";
   const Status status = writeFileAtomically(path, "x");
   ASSERT_FALSE(status.ok());
@@ -65,7 +65,7 @@ TEST_F(AtomicFile, RefusesAMissingDirectoryNamingThePath) {
   EXPECT_FALSE(fs::exists(path));
 }
 
-TEST_F(AtomicFile, LeavesNoTemporaryFileWhenTheRenameFails) {
+TEST_F(AtomicBytes, LeavesNoTemporaryFileWhenTheRenameFails) {
   // A directory cannot be replaced by a file: the rename fails after the bytes are written.
   const fs::path path = directory_ / "taken";
   fs::create_directory(path);
@@ -76,12 +76,12 @@ TEST_F(AtomicFile, LeavesNoTemporaryFileWhenTheRenameFails) {
   EXPECT_EQ(entries(), 1u);
 }
 
-TEST_F(AtomicFile, RefusesAPathWithoutAFileName) {
+TEST_F(AtomicBytes, RefusesAPathWithoutAFileName) {
   const Status status = writeFileAtomically(directory_ / "", "x");
   ASSERT_FALSE(status.ok());
-  EXPECT_NE(status.error().find("no file name"), std::string::npos) << status.error();
+  EXPECT_NE(status.error().find("not a file name"), std::string::npos) << status.error();
   EXPECT_EQ(entries(), 0u);
 }
 
 }  // namespace
-}  // namespace datomsim::render
+}  // namespace datomsim

@@ -1,12 +1,12 @@
-#include "io/atomic_file.h"
+#include "common/atomic_file.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "unit/io/expect_same_scene.h"
+#include "support/temporary_directory.h"
 
-namespace datomsim::io {
+namespace datomsim {
 namespace {
 
 using testing::readText;
@@ -80,4 +80,4 @@ TEST(AtomicFile, WritesIntoTheCurrentDirectoryForABareName) {
 }
 
 }  // namespace
-}  // namespace datomsim::io
+}  // namespace datomsim

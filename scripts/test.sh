@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Builds datomsim and runs every check: formatting, the unit and scenario tests (release build,
+# warnings as errors), the same tests under AddressSanitizer and UndefinedBehaviorSanitizer, a
+# determinism check across optimisation levels, a smoke run of the benchmarks, and the viewer's
+# tests. Exits non-zero on the first failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+scripts/install-deps.sh
+scripts/check-format.sh
+
+echo "== release build and tests"
+scripts/build.sh release
+ctest --test-dir build/release --output-on-failure -j "$(nproc)"
+
+echo "== sanitizer build and tests"
+scripts/build.sh sanitize
+ctest --test-dir build/sanitize --output-on-failure -j "$(nproc)"
+
+echo "== determinism: the same run at -O0 (sanitize) and -O2 (release)"
+scratch="$(mktemp -d)"
+trap 'rm -rf "$scratch"' EXIT
+for flavour in release sanitize; do
+  "build/$flavour/bin/datomsim" generate arch --hole 1 -o "$scratch/arch.json" 2> /dev/null
+  "build/$flavour/bin/datomsim" run "$scratch/arch.json" --program follow-gradient \
+    --goal 6,5,2 --start 0,0,2 --seed 3 --jitter-ms 5 --trace "$scratch/$flavour.jsonl" \
+    --out "$scratch/$flavour.json"
+done
+cmp "$scratch/release.jsonl" "$scratch/sanitize.jsonl"
+cmp "$scratch/release.json" "$scratch/sanitize.json"
+echo "traces identical ($(wc -l < "$scratch/release.jsonl") lines)"
+
+echo "== benchmarks (smoke run)"
+scripts/bench.sh --smoke

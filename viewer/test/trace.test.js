@@ -1,0 +1,135 @@
+import assert from 'node:assert/strict';
+import { describe, it } from 'node:test';
+import {
+  TraceError,
+  checkOverlay,
+  nextChangeTime,
+  parseTrace,
+  previousChangeTime,
+  splitJsonValues,
+} from '../src/trace.js';
+import { fixtureText, module, syntheticTrace } from './fixtures/synthetic.js';
+
+describe('splitJsonValues', () => {
+  it('reads one value per line and values spread over several lines', () => {
+    const values = splitJsonValues('{"a":1}\n{"b":\n [1,\n 2]}\n\n{"c":"}{\\"x"}\n');
+    assert.deepEqual(
+      values.map((v) => [v.value, v.line]),
+      [
+        [{ a: 1 }, 1],
+        [{ b: [1, 2] }, 2],
+        [{ c: '}{"x' }, 6],
+      ],
+    );
+  });
+
+  it('names the line of a bad value', () => {
+    assert.throws(() => splitJsonValues('{"a":1}\n{"b":}\n'), /line 2: invalid JSON/);
+    assert.throws(() => splitJsonValues('{"a":1}\n\n{"b":[1}\n'), TraceError);
+    assert.throws(() => splitJsonValues('{"a":1}\n42\n'), /line 2: expected a JSON object/);
+    assert.throws(() => splitJsonValues('{"a":1}\n{"b":[1,2]\n'), /line 2: unterminated/);
+  });
+});
+
+describe('parseTrace on a run of the simulator', () => {
+  const trace = parseTrace(fixtureText());
+
+  it('reads the header and its 130 modules', () => {
+    assert.equal(trace.header.format, 'datomsim-trace');
+    assert.equal(trace.header.modules.length, 130);
+    assert.equal(trace.header.kinematics.rest.length, 43);
+  });
+
+  it('sorts changes by time, keeping the file order at equal times', () => {
+    for (let k = 1; k < trace.events.length; ++k) {
+      const a = trace.events[k - 1];
+      const b = trace.events[k];
+      assert.ok(a.t < b.t || (a.t === b.t && a.seq < b.seq), `events ${k - 1} and ${k} out of order`);
+    }
+  });
+
+  it('lasts until the end of its last change', () => {
+    const last = Math.max(...trace.events.map((e) => e.t + (e.body && e.body.d ? e.body.d : 0)));
+    assert.equal(trace.duration, last);
+    assert.ok(trace.end, 'the run has an end line');
+  });
+
+  it('steps through the starts and ends of changes', () => {
+    const times = trace.changeTimes;
+    assert.equal(times[0], 0);
+    const firstTurn = trace.events.find((e) => e.kind === 'turn');
+    assert.ok(times.includes(firstTurn.t));
+    assert.ok(times.includes(firstTurn.t + firstTurn.body.d), 'the middle of a motion is a step');
+    assert.equal(nextChangeTime(times, 0), times[1]);
+    assert.equal(nextChangeTime(times, times[times.length - 1]), null);
+    assert.equal(previousChangeTime(times, times[2]), times[1]);
+    assert.equal(previousChangeTime(times, 0), null);
+    assert.equal(nextChangeTime(times, (times[3] + times[4]) / 2), times[4]);
+  });
+
+  it('collects the notes for the timeline', () => {
+    assert.ok(trace.notes.length >= 7);
+    assert.match(trace.notes[0].text, /module 1 turns/);
+  });
+});
+
+describe('parseTrace refusals', () => {
+  const modules = [module(1, [0, 0, 0]), module(2, [1, 0, 0])];
+
+  it('refuses a file that is not a trace', () => {
+    assert.throws(() => parseTrace(''), /empty/);
+    assert.throws(() => parseTrace('{"format":"datomsim-scene","version":1}\n'), /not a datomsim trace/);
+    assert.throws(() => parseTrace(syntheticTrace({ modules, header: { version: 2 } })), /unsupported trace version 2/);
+  });
+
+  it('names the line and the module of a change about an unknown module', () => {
+    const text = syntheticTrace({
+      modules,
+      events: [{ t: 0, note: 'hello' }, { t: 1, piston: { m: 7, p: 0, from: 0, to: 1, d: 1 } }],
+    });
+    assert.throws(() => parseTrace(text), /line 3: "piston" names unknown module 7/);
+  });
+
+  it('refuses bad values in changes', () => {
+    const bad = [
+      { t: -1, note: 'x' },
+      { t: 0, piston: { m: 1, p: 6, from: 0, to: 1, d: 1 } },
+      { t: 0, turn: { m: 1, axis: [0, 0], centre: [0, 0, 0], deg: 90, d: 1 } },
+      { t: 0, place: { m: 1, pos: [0, 0, 0], o: 24 } },
+      { t: 0, turn: { m: 1, axis: [0, 0, 1], centre: [0, 0, 0], deg: 90, d: 1, progress: [0] } },
+    ];
+    for (const event of bad) {
+      assert.throws(() => parseTrace(syntheticTrace({ modules, events: [event] })), TraceError, JSON.stringify(event));
+    }
+  });
+
+  it('ignores changes of a kind it does not know', () => {
+    const trace = parseTrace(syntheticTrace({ modules, events: [{ t: 1, sparkle: { m: 1 } }] }));
+    assert.equal(trace.events.length, 0);
+  });
+});
+
+describe('overlays', () => {
+  const modules = [module(1, [0, 0, 0])];
+
+  it('reads distances and a path from the header', () => {
+    const trace = parseTrace(
+      syntheticTrace({ modules, header: { overlay: { goal: [1, 0, 1], distances: [[1, 0, 1, 0]], path: [[0, 0, 1], [1, 0, 1]] } } }),
+    );
+    assert.deepEqual(trace.overlay.distances, [[1, 0, 1, 0]]);
+    assert.equal(trace.overlay.path.length, 2);
+  });
+
+  it('reads the top-level "distances" and "path" of a header too', () => {
+    const trace = parseTrace(syntheticTrace({ modules, header: { distances: [[1, 0, 1, 3]] } }));
+    assert.deepEqual(trace.overlay.distances, [[1, 0, 1, 3]]);
+  });
+
+  it('refuses malformed entries and treats an empty overlay as none', () => {
+    assert.throws(() => checkOverlay({ distances: [[1, 2, 3]] }), /distances\[0\]/);
+    assert.throws(() => checkOverlay({ path: [[1, 2]] }), /path\[0\]/);
+    assert.throws(() => checkOverlay([1]), /not an object/);
+    assert.equal(checkOverlay({ distances: [] }), null);
+    assert.equal(checkOverlay(null), null);
+  });
+});

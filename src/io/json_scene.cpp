@@ -279,6 +279,7 @@ class SceneHandler {
       }
     }
     pending_ = {};
+    world.shrinkToFit();
     world.latchAllNeighbours();
     return std::move(scene_);
   }

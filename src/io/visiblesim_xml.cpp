@@ -148,6 +148,7 @@ class XmlSceneReader {
     if (!blockList) return errorAt(worldElement, "<world> has no <blockList>");
 
     if (Status status = readBlocks(*blockList, scene); !status) return Error{status.error()};
+    scene.world.shrinkToFit();
     scene.world.latchAllNeighbours();
     return scene;
   }

@@ -8,13 +8,11 @@ namespace datomsim::motion {
 
 using geometry::Cell;
 using geometry::toString;
-using world::packCell;
 
 std::optional<int> DistanceMap::distanceAt(const Cell& cell) const {
-  if (!world::isPackable(cell)) return std::nullopt;
-  const auto found = index_.find(packCell(cell));
-  if (!found) return std::nullopt;
-  return cells_[*found].second;
+  const uint32_t found = index_.find(cell);
+  if (found == world::Occupancy::kEmpty) return std::nullopt;
+  return cells_[found].second;
 }
 
 std::vector<std::pair<Cell, int>> DistanceMap::sorted() const {
@@ -33,7 +31,7 @@ Result<DistanceMap> reach(const world::World& fixedWorld, const RuleTable& table
                  "; the mobile must be taken out of the fixed world first"};
   }
   DistanceMap map(goal, options);
-  map.index_.insert(packCell(goal), 0);
+  map.index_.insert(goal, 0);
   map.cells_.push_back({goal, 0});
 
   // Breadth first: cells_ is the queue, in order of distance.
@@ -48,9 +46,9 @@ Result<DistanceMap> reach(const world::World& fixedWorld, const RuleTable& table
         const Rule& rule = rules[i];
         const Cell target = pivotCell + rule.goalOffset;
         ++map.ruleEvaluations_;
-        if (map.index_.find(packCell(target))) continue;
+        if (map.index_.find(target) != world::Occupancy::kEmpty) continue;
         if (!holds(fixedWorld, rule, mobile, options)) continue;
-        map.index_.insert(packCell(target), static_cast<uint32_t>(map.cells_.size()));
+        map.index_.insert(target, static_cast<uint32_t>(map.cells_.size()));
         map.cells_.push_back({target, distance + 1});
         map.maxDistance_ = distance + 1;
       }

@@ -13,7 +13,7 @@
 #include "geometry/cell.h"
 #include "motion/motion.h"
 #include "motion/rule_table.h"
-#include "world/cell_index.h"
+#include "world/occupancy.h"
 #include "world/world.h"
 
 namespace datomsim::motion {
@@ -35,13 +35,17 @@ class DistanceMap {
   int maxDistance() const { return maxDistance_; }
   // How many rules were evaluated to build the map (for benchmarks).
   uint64_t ruleEvaluations() const { return ruleEvaluations_; }
+  // Bytes held by the map (for benchmarks).
+  size_t memoryBytes() const {
+    return index_.memoryBytes() + cells_.capacity() * sizeof(cells_[0]);
+  }
 
  private:
   friend Result<DistanceMap> reach(const world::World&, const RuleTable&, geometry::Cell,
                                    const RuleOptions&);
   geometry::Cell goal_;
   RuleOptions options_;
-  world::CellIndex index_;                             // packed cell -> position in cells_
+  world::Occupancy index_;  // cell -> position in cells_, dense over the explored box
   std::vector<std::pair<geometry::Cell, int>> cells_;  // in breadth-first order
   int maxDistance_ = 0;
   uint64_t ruleEvaluations_ = 0;

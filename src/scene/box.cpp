@@ -47,6 +47,7 @@ Result<world::World> box(const Cell& size, const BoxOptions& options) {
       !added) {
     return Error{added.error()};
   }
+  world.shrinkToFit();
   world.latchAllNeighbours();
   return world;
 }

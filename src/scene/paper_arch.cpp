@@ -68,6 +68,7 @@ Result<world::World> paperArch(int holeHeight) {
     module.color = kArchColor;
     if (Status added = world.add(module); !added) return Error{added.error()};
   }
+  world.shrinkToFit();
   world.latchAllNeighbours();
   return world;
 }

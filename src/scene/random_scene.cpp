@@ -83,6 +83,7 @@ Result<world::World> random(uint64_t seed, size_t count, const RandomOptions& op
       if (inFrontier.insert(world::packCell(next)).second) frontier.push_back(next);
     }
   }
+  world.shrinkToFit();
   world.latchAllNeighbours();
   return world;
 }

@@ -43,6 +43,37 @@ void Occupancy::clear() {
   *this = Occupancy();
 }
 
+void Occupancy::shrinkToFit() {
+  if (sparse_ || count_ == 0) return;
+  // The tight box, in grid coordinates of the current box.
+  int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX};
+  int32_t hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
+  for (int32_t z = 0; z < box_.nz; ++z) {
+    for (int32_t y = 0; y < box_.ny; ++y) {
+      for (int32_t x = 0; x < box_.nx; ++x) {
+        if (dense_[(size_t(z) * box_.ny + y) * box_.nx + x] == kEmpty) continue;
+        const int32_t c[3] = {x, y, z};
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min(lo[k], c[k]);
+          hi[k] = std::max(hi[k], c[k]);
+        }
+      }
+    }
+  }
+  const Box tight{box_.x0 + lo[0],   box_.y0 + lo[1],   box_.z0 + lo[2],
+                  hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1};
+  std::vector<uint32_t> packed(size_t(tight.nx) * tight.ny * tight.nz);
+  for (int32_t z = 0; z < tight.nz; ++z) {
+    for (int32_t y = 0; y < tight.ny; ++y) {
+      const size_t from = (size_t(z + lo[2]) * box_.ny + (y + lo[1])) * box_.nx + lo[0];
+      std::copy_n(dense_.begin() + from, tight.nx,
+                  packed.begin() + (size_t(z) * tight.ny + y) * tight.nx);
+    }
+  }
+  dense_ = std::move(packed);
+  box_ = tight;
+}
+
 size_t Occupancy::memoryBytes() const {
   return dense_.capacity() * sizeof(uint32_t) + sparseIndex_.memoryBytes();
 }

@@ -32,6 +32,8 @@ class Occupancy {
   void insert(const geometry::Cell& cell, uint32_t value);
   void erase(const geometry::Cell& cell);
   void clear();
+  // Shrinks the dense box to the cells in use, dropping the slack left for growth.
+  void shrinkToFit();
 
   bool isSparse() const { return sparse_; }
   size_t memoryBytes() const;

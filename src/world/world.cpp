@@ -11,13 +11,57 @@ using geometry::toString;
 
 namespace {
 constexpr size_t kNotFound = SIZE_MAX;
-}
+constexpr uint32_t kNoIndex = UINT32_MAX;
+}  // namespace
 
 World::World(Bounds bounds) : bounds_(bounds) {}
 
 size_t World::slotOf(ModuleId id) const {
-  const auto found = indexById_.find(id.value);
+  if (!sparseIds_) {
+    if (id.value >= denseIndexById_.size()) return kNotFound;
+    const uint32_t index = denseIndexById_[id.value];
+    return index == kNoIndex ? kNotFound : index;
+  }
+  const auto found = sparseIndexById_.find(id.value);
   return found ? *found : kNotFound;
+}
+
+void World::setIndex(ModuleId id, uint32_t index) {
+  // Dense while the largest id stays within a small multiple of the module count.
+  if (!sparseIds_ && id.value >= denseIndexById_.size()) {
+    const size_t wanted = size_t(id.value) + 1;
+    if (wanted > 4 * modules_.size() + 4096) {
+      for (uint32_t i = 0; i < denseIndexById_.size(); ++i) {
+        if (denseIndexById_[i] != kNoIndex) sparseIndexById_.insert(i, denseIndexById_[i]);
+      }
+      denseIndexById_ = {};
+      sparseIds_ = true;
+    } else {
+      denseIndexById_.resize(std::max(wanted, denseIndexById_.size() * 3 / 2), kNoIndex);
+    }
+  }
+  if (sparseIds_) {
+    sparseIndexById_.insert(id.value, index);
+  } else {
+    denseIndexById_[id.value] = index;
+  }
+}
+
+void World::eraseIndex(ModuleId id) {
+  if (sparseIds_) {
+    sparseIndexById_.erase(id.value);
+  } else if (id.value < denseIndexById_.size()) {
+    denseIndexById_[id.value] = kNoIndex;
+  }
+}
+
+void World::shrinkToFit() {
+  occupancy_.shrinkToFit();
+  modules_.shrink_to_fit();
+  if (!sparseIds_) {
+    denseIndexById_.resize(maxId_ + 1);
+    denseIndexById_.shrink_to_fit();
+  }
 }
 
 std::optional<uint32_t> World::indexOf(ModuleId id) const {
@@ -54,7 +98,7 @@ Status World::add(const Module& module) {
   const auto index = static_cast<uint32_t>(modules_.size());
   modules_.push_back(module);
   occupancy_.insert(module.cell, index);
-  indexById_.insert(module.id.value, index);
+  setIndex(module.id, index);
   maxId_ = std::max(maxId_, module.id.value);
   return Ok{};
 }
@@ -66,13 +110,13 @@ Status World::remove(ModuleId id) {
     if (neighbour(modules_[index], d)) setLatched(id, d, false);
   }
   occupancy_.erase(modules_[index].cell);
-  indexById_.erase(id.value);
+  eraseIndex(id);
   // Swap-remove: the last module takes the freed slot.
   const size_t last = modules_.size() - 1;
   if (index != last) {
     modules_[index] = modules_[last];
     occupancy_.insert(modules_[index].cell, static_cast<uint32_t>(index));
-    indexById_.insert(modules_[index].id.value, static_cast<uint32_t>(index));
+    setIndex(modules_[index].id, static_cast<uint32_t>(index));
   }
   modules_.pop_back();
   return Ok{};
@@ -136,7 +180,8 @@ ModuleId World::nextFreeId() const {
 }
 
 size_t World::memoryBytes() const {
-  return modules_.capacity() * sizeof(Module) + occupancy_.memoryBytes() + indexById_.memoryBytes();
+  return modules_.capacity() * sizeof(Module) + occupancy_.memoryBytes() +
+         denseIndexById_.capacity() * sizeof(uint32_t) + sparseIndexById_.memoryBytes();
 }
 
 }  // namespace datomsim::world

@@ -75,6 +75,9 @@ class World {
   // Whether the module's connector facing world direction d is latched.
   bool isLatched(const Module& module, int direction) const;
 
+  // Releases the room kept for growth, once a world is loaded or generated.
+  void shrinkToFit();
+
   // A fresh id: one more than the largest in use.
   ModuleId nextFreeId() const;
 
@@ -83,11 +86,16 @@ class World {
 
  private:
   size_t slotOf(ModuleId id) const;
+  void setIndex(ModuleId id, uint32_t index);
+  void eraseIndex(ModuleId id);
 
   Bounds bounds_;
   std::vector<Module> modules_;
   Occupancy occupancy_;
-  CellIndex indexById_;
+  // Module index by id: a plain array while ids are dense (as files number them), else a hash.
+  std::vector<uint32_t> denseIndexById_;
+  CellIndex sparseIndexById_;
+  bool sparseIds_ = false;
   uint32_t maxId_ = 0;
 };
 

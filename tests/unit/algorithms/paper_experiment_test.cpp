@@ -2,6 +2,7 @@
 // breadth-first reach, and the follow-gradient run on both arch scenes.
 #include <gtest/gtest.h>
 
+#include "experiment/paper.h"
 #include "experiment/run.h"
 #include "geometry/lattice.h"
 #include "motion/reach.h"
@@ -9,14 +10,15 @@
 #include "scene/random_scene.h"
 
 namespace datomsim::algorithms {
-namespace {
-
-using geometry::Cell;
 
 const motion::RuleTable& table() {
   static const motion::RuleTable kTable;
   return kTable;
 }
+
+namespace {
+
+using geometry::Cell;
 
 // The centralised reach for the same request: the mobile taken out of the world.
 std::vector<std::pair<Cell, int>> reachDistances(world::World world, const Cell& goal,
@@ -134,3 +136,35 @@ TEST(PaperExperiment, TheSameSeedGivesTheSameTraceByteForByte) {
 
 }  // namespace
 }  // namespace datomsim::algorithms
+
+namespace datomsim::experiment {
+namespace {
+
+TEST(PaperObservations, ThePathGoesUnderTheTwoHighArchAndOverTheOneHighOne) {
+  const auto experiment = runPaperExperiment(algorithms::table());
+  ASSERT_TRUE(experiment.ok()) << experiment.error();
+  ASSERT_EQ(experiment->scenes.size(), 2u);
+  const PaperScene& high = experiment->scenes[0];
+  const PaperScene& low = experiment->scenes[1];
+  ASSERT_EQ(high.holeHeight, 2);
+  EXPECT_TRUE(high.passesUnderArch);
+  EXPECT_EQ(high.highestPathLayer, 2);
+  ASSERT_EQ(low.holeHeight, 1);
+  EXPECT_FALSE(low.passesUnderArch);
+  EXPECT_GE(low.highestPathLayer, 4);  // over the obstacle
+  // The simulated Algorithm 1 walks the same path as the centralised walk.
+  EXPECT_EQ(high.run.path, high.path);
+  EXPECT_EQ(low.run.path, low.path);
+}
+
+TEST(PaperObservations, CellsOnTheFarSideGetLargerDistancesWhenTheHoleIsOneHigh) {
+  const auto experiment = runPaperExperiment(algorithms::table());
+  ASSERT_TRUE(experiment.ok()) << experiment.error();
+  EXPECT_TRUE(experiment->farSideFartherWithLowHole);
+  // The start itself is one such cell.
+  EXPECT_GT(*experiment->scenes[1].distances.distanceAt(scene::kPaperStart),
+            *experiment->scenes[0].distances.distanceAt(scene::kPaperStart));
+}
+
+}  // namespace
+}  // namespace datomsim::experiment

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "motion/bidirectionality.h"
+#include "scene/random_scene.h"
 #include "support/world_builder.h"
 
 namespace datomsim::motion {
@@ -88,6 +89,27 @@ TEST(Bidirectionality, HoldsOnABoxForEveryOptionSet) {
       const auto report = checkBidirectionality(world, table(), {rules, attachment});
       EXPECT_GT(report.motionsChecked, 0u);
       EXPECT_TRUE(report.counterexamples.empty());
+    }
+  }
+}
+
+// Theorem 2 as a property: random scenes (random orientations, some with a grid), every option.
+TEST(Bidirectionality, HoldsOnRandomScenesForEveryOptionSet) {
+  for (uint64_t seed = 1; seed <= 20; ++seed) {
+    scene::RandomOptions options;
+    options.randomOrientations = true;
+    options.maxHeight = 2 + int(seed % 3);
+    if (seed % 2 == 0) options.gridSize = Cell{8, 8, 5};
+    const auto world = scene::random(seed, 40, options);
+    ASSERT_TRUE(world.ok()) << world.error();
+    for (const RuleSet rules : {RuleSet::kPaper, RuleSet::kStrict}) {
+      for (const bool attachment : {true, false}) {
+        const auto report = checkBidirectionality(*world, table(), {rules, attachment});
+        EXPECT_GT(report.motionsChecked, 0u) << "seed " << seed;
+        EXPECT_TRUE(report.counterexamples.empty())
+            << "seed " << seed << ": " << geometry::toString(report.counterexamples[0].forward.from)
+            << " -> " << geometry::toString(report.counterexamples[0].forward.goal);
+      }
     }
   }
 }

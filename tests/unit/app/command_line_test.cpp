@@ -1,0 +1,173 @@
+// The command line as a user meets it: outputs other tools read, and every kind of bad input
+// refused with a message naming the value, a non-zero status and no output file.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/temporary_directory.h"
+
+namespace datomsim {
+namespace {
+
+using testing::readText;
+using testing::TemporaryDirectory;
+
+struct Outcome {
+  int status = -1;
+  std::string output;  // standard output and standard error together
+};
+
+Outcome datomsim(const std::string& arguments) {
+  const std::string command = std::string(DATOMSIM_BINARY) + " " + arguments + " 2>&1";
+  Outcome outcome;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  std::array<char, 4096> buffer{};
+  size_t read = 0;
+  while ((read = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
+    outcome.output.append(buffer.data(), read);
+  }
+  const int status = ::pclose(pipe);
+  outcome.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return outcome;
+}
+
+class CommandLine : public ::testing::Test {
+ protected:
+  std::string path(const std::string& name) const { return (directory_.path() / name).string(); }
+  std::string arch(int hole) {
+    const std::string file = path("arch" + std::to_string(hole) + ".json");
+    EXPECT_EQ(datomsim("generate arch --hole " + std::to_string(hole) + " -o " + file).status, 0);
+    return file;
+  }
+  TemporaryDirectory directory_;
+};
+
+TEST_F(CommandLine, GeometryPrintsThePapersDimensionsAndAngles) {
+  const Outcome rest = datomsim("geometry --radius 1 --fraction 0 --json");
+  ASSERT_EQ(rest.status, 0) << rest.output;
+  const auto json = nlohmann::json::parse(rest.output);
+  EXPECT_NEAR(json["c"].get<double>(), 0.61678, 1e-4);
+  EXPECT_NEAR(json["e"].get<double>(), 0.18065, 1e-4);
+  EXPECT_NEAR(json["a"].get<double>(), json["c"].get<double>(), 1e-12);
+  EXPECT_NEAR(json["t_max"].get<double>(), 0.19859, 1e-4);
+  EXPECT_NEAR(json["q0"].get<double>(), -135, 1e-9);
+  EXPECT_NEAR(json["q1"].get<double>(), 180, 1e-9);
+  EXPECT_NEAR(json["p0"].get<double>(), -135, 1e-9);
+  const auto full = nlohmann::json::parse(datomsim("geometry --fraction 1 --json").output);
+  EXPECT_NEAR(full["q0"].get<double>(), -90, 1e-9);
+  EXPECT_NEAR(full["q1"].get<double>(), 90, 1e-9);
+  EXPECT_NEAR(full["p0"].get<double>(), -90, 1e-9);
+  const auto thick = nlohmann::json::parse(datomsim("geometry --thickness 0.1 --json").output);
+  EXPECT_NEAR(thick["r_prime"].get<double>(), 0.95, 1e-12);
+  EXPECT_LT(thick["c_prime"].get<double>(), thick["c"].get<double>());
+}
+
+TEST_F(CommandLine, RefusesBadGeometryValuesNamingThem) {
+  for (const std::string arguments : {"--thickness 0.25", "--radius -1", "--fraction 1.5"}) {
+    const Outcome outcome = datomsim("geometry " + arguments);
+    EXPECT_EQ(outcome.status, 1) << arguments;
+    EXPECT_NE(outcome.output.find("error"), std::string::npos) << outcome.output;
+  }
+}
+
+TEST_F(CommandLine, RefusesUnknownSubcommandsAndOptions) {
+  EXPECT_NE(datomsim("frobnicate").status, 0);
+  EXPECT_NE(datomsim("geometry --colour red").status, 0);
+  EXPECT_NE(datomsim("reach x.json --goal 1,2,3 --rules lenient").status, 0);
+}
+
+TEST_F(CommandLine, ReachWritesTheDocumentedJsonSortedByCell) {
+  const std::string out = path("reach.json");
+  const Outcome outcome = datomsim("reach " + arch(2) + " --goal 6,5,2 --out " + out);
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const auto json = nlohmann::json::parse(readText(out));
+  EXPECT_EQ(json["goal"], nlohmann::json({6, 5, 2}));
+  EXPECT_EQ(json["rules"], "paper");
+  EXPECT_EQ(json["attachment"], "on");
+  const auto& distances = json["distances"];
+  ASSERT_GT(distances.size(), 100u);
+  for (size_t i = 1; i < distances.size(); ++i) {
+    const auto a = distances[i - 1], b = distances[i];
+    EXPECT_LT(std::make_tuple(a[0].get<int>(), a[1].get<int>(), a[2].get<int>()),
+              std::make_tuple(b[0].get<int>(), b[1].get<int>(), b[2].get<int>()));
+  }
+}
+
+TEST_F(CommandLine, MovesListsEveryRuleWithItsRefusal) {
+  const Outcome outcome = datomsim("moves " + arch(2) + " --at 0,0,2");
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const auto json = nlohmann::json::parse(outcome.output);
+  EXPECT_EQ(json["at"], nlohmann::json({0, 0, 2}));
+  const auto& moves = json["moves"];
+  ASSERT_FALSE(moves.empty());
+  EXPECT_EQ(moves.size() % 6, 0u);  // 6 rules per pivot
+  int valid = 0;
+  for (const auto& move : moves) {
+    EXPECT_TRUE(move["turn"] == "left" || move["turn"] == "right" || move["turn"] == "ahead");
+    if (move["valid"].get<bool>()) {
+      ++valid;
+      EXPECT_TRUE(move["refusal"].is_null());
+    } else {
+      EXPECT_FALSE(move["refusal"].get<std::string>().empty());
+    }
+  }
+  EXPECT_GT(valid, 0);
+}
+
+TEST_F(CommandLine, RunGradientWritesTheSameDistancesAsReach) {
+  const std::string scene = arch(1);
+  ASSERT_EQ(datomsim("reach " + scene + " --goal 6,5,2 --out " + path("reach.json")).status, 0);
+  const Outcome run =
+      datomsim("run " + scene + " --program gradient --goal 6,5,2 --out " + path("run.json"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_EQ(nlohmann::json::parse(readText(path("run.json")))["distances"],
+            nlohmann::json::parse(readText(path("reach.json")))["distances"]);
+}
+
+TEST_F(CommandLine, BadInputLeavesNoOutputFile) {
+  const std::string out = path("out.json");
+  const std::string bad = path("bad.xml");
+  {
+    std::FILE* file = std::fopen(bad.c_str(), "w");
+    std::fputs(
+        "<?xml version=\"1.0\"?>\n<world gridSize=\"10,10,10\">\n<blockList>\n"
+        "<block position=\"1,2\"/>\n</blockList>\n</world>\n",
+        file);
+    std::fclose(file);
+  }
+  const Outcome convert = datomsim("convert " + bad + " -o " + out);
+  EXPECT_EQ(convert.status, 1);
+  EXPECT_NE(convert.output.find("bad.xml:4"), std::string::npos) << convert.output;
+  const Outcome goal = datomsim("reach " + arch(2) + " --goal 6,5 --out " + out);
+  EXPECT_EQ(goal.status, 1);
+  EXPECT_NE(goal.output.find("\"6,5\""), std::string::npos) << goal.output;
+  const Outcome outside = datomsim("reach " + arch(2) + " --goal 50,50,2 --out " + out);
+  EXPECT_EQ(outside.status, 1);
+  EXPECT_NE(outside.output.find("outside the world"), std::string::npos) << outside.output;
+  const Outcome missing = datomsim("info " + path("missing.json"));
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.output.find("missing.json"), std::string::npos) << missing.output;
+  const Outcome extension = datomsim("generate box --size 2,2,1 -o " + path("box.txt"));
+  EXPECT_EQ(extension.status, 1);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_FALSE(std::filesystem::exists(path("box.txt")));
+}
+
+TEST_F(CommandLine, RunRefusesFollowGradientWithoutAStart) {
+  const Outcome outcome = datomsim("run " + arch(2) + " --program follow-gradient --goal 6,5,2");
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.output.find("--start"), std::string::npos) << outcome.output;
+}
+
+TEST_F(CommandLine, VerifyFindsNoCounterexampleOnThePapersScene) {
+  const Outcome outcome = datomsim("verify " + arch(1));
+  EXPECT_EQ(outcome.status, 0) << outcome.output;
+  EXPECT_NE(outcome.output.find("0 counterexamples"), std::string::npos) << outcome.output;
+}
+
+}  // namespace
+}  // namespace datomsim

@@ -1,0 +1,252 @@
+#include "sim/simulator.h"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "geometry/lattice.h"
+#include "support/world_builder.h"
+
+namespace datomsim::sim {
+namespace {
+
+using geometry::Cell;
+using program::Message;
+using program::ModuleContext;
+using testing::WorldBuilder;
+
+struct Ping {
+  static constexpr std::string_view kName = "Ping";
+  int32_t hops;
+};
+
+// A program made of lambdas, so that each test states its behaviour in a few lines.
+struct Script {
+  std::function<void(ModuleContext&)> start = [](ModuleContext&) {};
+  std::function<void(ModuleContext&, int, const Message&)> message = [](ModuleContext&, int,
+                                                                        const Message&) {};
+  std::function<void(ModuleContext&, int)> timer = [](ModuleContext&, int) {};
+  std::function<void(ModuleContext&)> deformed = [](ModuleContext&) {};
+  std::function<void(ModuleContext&)> moved = [](ModuleContext&) {};
+};
+
+class ScriptedProgram : public program::ModuleProgram {
+ public:
+  explicit ScriptedProgram(const Script* script) : script_(script) {}
+  void onStart(ModuleContext& c) override { script_->start(c); }
+  void onMessage(ModuleContext& c, int connector, const Message& m) override {
+    script_->message(c, connector, m);
+  }
+  void onTimer(ModuleContext& c, int tag) override { script_->timer(c, tag); }
+  void onDeformationDone(ModuleContext& c) override { script_->deformed(c); }
+  void onMotionDone(ModuleContext& c) override { script_->moved(c); }
+
+ private:
+  const Script* script_;
+};
+
+// Every module runs the script of its id (or nothing).
+program::ProgramFactory scripts(std::map<uint32_t, Script>& byId) {
+  return [&byId](world::ModuleId id) -> std::unique_ptr<program::ModuleProgram> {
+    static const Script kIdle;
+    const auto found = byId.find(id.value);
+    return std::make_unique<ScriptedProgram>(found == byId.end() ? &kIdle : &found->second);
+  };
+}
+
+const motion::RuleTable& table() {
+  static const motion::RuleTable kTable;
+  return kTable;
+}
+
+TEST(Simulator, SendingThroughAnUnlatchedConnectorIsAnError) {
+  std::map<uint32_t, Script> programs;
+  Status sent = Ok{};
+  programs[1].start = [&](ModuleContext& c) {
+    // Connector facing +y: nothing there.
+    sent = c.send(c.orientation().ownConnector(1), Message::of(Ping{0}));
+  };
+  Simulator simulator(WorldBuilder().modules({{0, 0, 0}, {1, 0, 0}}).build(), table(), {});
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  ASSERT_TRUE(simulator.run().ok());
+  ASSERT_FALSE(sent.ok());
+  EXPECT_NE(sent.error().find("not latched"), std::string::npos) << sent.error();
+}
+
+TEST(Simulator, AMessageArrivesAfterTheDelayThroughTheFacingConnector) {
+  std::map<uint32_t, Script> programs;
+  program::Time arrival = -1;
+  int arrivedThrough = -1;
+  programs[1].start = [](ModuleContext& c) {
+    ASSERT_TRUE(c.send(c.orientation().ownConnector(0), Message::of(Ping{1})).ok());
+  };
+  programs[2].message = [&](ModuleContext& c, int connector, const Message& m) {
+    ASSERT_NE(m.as<Ping>(), nullptr);
+    EXPECT_EQ(m.as<Ping>()->hops, 1);
+    arrival = c.now();
+    arrivedThrough = connector;
+  };
+  SimulationOptions options;
+  options.messageDelay = 7 * program::kMillisecond;
+  // Module 2 turned (orientation 9): its own connector facing -x is not 6.
+  Simulator simulator(WorldBuilder().module({0, 0, 0}).module({1, 0, 0}, 9).build(), table(),
+                      options);
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  ASSERT_TRUE(simulator.run().ok());
+  EXPECT_EQ(arrival, 7 * program::kMillisecond);
+  EXPECT_EQ(arrivedThrough, geometry::Orientation::fromCode(9)->ownConnector(6));
+  EXPECT_EQ(simulator.statistics().messagesByType.at("Ping"), 1u);
+}
+
+TEST(Simulator, EventsAtTheSameTimeRunInTheOrderTheyWereScheduled) {
+  std::map<uint32_t, Script> programs;
+  std::vector<int> order;
+  programs[1].start = [](ModuleContext& c) {
+    for (int tag = 0; tag < 5; ++tag) c.setTimer(program::kSecond, tag);
+  };
+  programs[1].timer = [&](ModuleContext&, int tag) { order.push_back(tag); };
+  Simulator simulator(WorldBuilder().module({0, 0, 0}).build(), table(), {});
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  ASSERT_TRUE(simulator.run().ok());
+  EXPECT_EQ(order, (std::vector<int>{0, 1, 2, 3, 4}));
+}
+
+TEST(Simulator, ASecondPistonIsRefusedWhileOneIsCompressed) {
+  std::map<uint32_t, Script> programs;
+  Status second = Ok{};
+  programs[1].start = [](ModuleContext& c) { ASSERT_TRUE(c.compress(0).ok()); };
+  programs[1].deformed = [&](ModuleContext& c) { second = c.compress(1); };
+  Simulator simulator(WorldBuilder().module({0, 0, 0}).build(), table(), {});
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  ASSERT_TRUE(simulator.run().ok());
+  ASSERT_FALSE(second.ok());
+  EXPECT_NE(second.error().find("only one piston at a time"), std::string::npos);
+}
+
+// A pivot in mid-air with a mobile beside it: the go-ahead rule of the table's first neighbour.
+struct Stage {
+  const motion::Rule& rule = table().rule(2);  // direction 0, first piston, go ahead
+  Cell pivot{5, 5, 5};
+  Cell mobile = pivot + rule.mobileOffset;
+};
+
+TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
+  const Stage stage;
+  std::map<uint32_t, Script> programs;
+  Status started = Error{"not started"};
+  bool done = false;
+  programs[2].start = [&](ModuleContext& c) {
+    for (const motion::Evaluation& e : c.motions()) {
+      const auto* m = std::get_if<motion::Motion>(&e);
+      if (m && m->rule == &stage.rule) started = c.move(*m);
+    }
+  };
+  programs[2].moved = [&](ModuleContext&) { done = true; };
+  Simulator simulator(WorldBuilder().module(stage.pivot).module(stage.mobile).build(), table(), {});
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  const Status status = simulator.run();
+  ASSERT_TRUE(status.ok()) << status.error();
+  ASSERT_TRUE(started.ok()) << started.error();
+  ASSERT_TRUE(done);
+  const world::Module& mobile = *simulator.world().find(world::ModuleId{2});
+  EXPECT_EQ(mobile.cell, stage.pivot + stage.rule.goalOffset);
+  // Go ahead: a half turn about R.
+  const auto halfTurn = geometry::Orientation::quarterTurn(stage.rule.right);
+  EXPECT_EQ(mobile.orientation, halfTurn.then(halfTurn));
+  const int towardsPivot = *geometry::directionOfOffset(stage.pivot - mobile.cell);
+  EXPECT_TRUE(simulator.world().isLatched(mobile, towardsPivot));
+  EXPECT_EQ(simulator.statistics().motions, 1u);
+}
+
+TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
+  const Stage stage;
+  std::map<uint32_t, Script> programs;
+  Status started = Ok{};
+  programs[2].start = [&](ModuleContext& c) {
+    // A motion listed when the goal was free, asked for after the world changed.
+    motion::Motion stale;
+    stale.rule = &stage.rule;
+    stale.from = c.cell();
+    stale.goal = stage.pivot + stage.rule.goalOffset;
+    started = c.move(stale);
+  };
+  Simulator simulator(WorldBuilder()
+                          .module(stage.pivot)
+                          .module(stage.mobile)
+                          .module(stage.pivot + stage.rule.goalOffset)
+                          .build(),
+                      table(), {});
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  ASSERT_TRUE(simulator.run().ok());
+  ASSERT_FALSE(started.ok());
+  EXPECT_NE(started.error().find("the goal"), std::string::npos) << started.error();
+  EXPECT_EQ(simulator.world().find(world::ModuleId{2})->cell, stage.mobile);
+}
+
+// The go-ahead rule with a module in cell C (def(R)) held by a support behind it.
+struct BlockedStage : Stage {
+  Cell blocker = pivot + rule.cells[2].offset;  // C
+  Cell support =
+      blocker + geometry::neighbourOffset(*geometry::directionOfAxes(
+                    geometry::oppositeAxis(rule.right), geometry::oppositeAxis(rule.front)));
+  world::World build() const {
+    return WorldBuilder().module(pivot).module(mobile).module(blocker).module(support).build();
+  }
+};
+
+TEST(Simulator, AMotionWhoseBlockingModuleHasNotCompressedIsRefused) {
+  const BlockedStage stage;
+  ASSERT_EQ(stage.rule.cells[2].role, motion::CellRole::kC);
+  std::map<uint32_t, Script> programs;
+  Status started = Ok{};
+  programs[2].start = [&](ModuleContext& c) {
+    for (const motion::Evaluation& e : c.motions()) {
+      const auto* m = std::get_if<motion::Motion>(&e);
+      if (m && m->rule == &stage.rule) started = c.move(*m);
+    }
+  };
+  Simulator simulator(stage.build(), table(), {});
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  ASSERT_TRUE(simulator.run().ok());
+  ASSERT_FALSE(started.ok());
+  EXPECT_NE(started.error().find("must compress"), std::string::npos) << started.error();
+}
+
+TEST(Simulator, ReleasingWhileTheMobilePassesStopsTheRunWithAReport) {
+  const BlockedStage stage;
+  std::map<uint32_t, Script> programs;
+  // The blocker compresses at once and, badly, lets go half-way through the motion.
+  programs[3].start = [&](ModuleContext& c) {
+    ASSERT_TRUE(c.compress(c.orientation().ownPiston(stage.rule.right)).ok());
+  };
+  programs[3].deformed = [](ModuleContext& c) { c.setTimer(program::kSecond, 0); };
+  programs[3].timer = [](ModuleContext& c, int) { ASSERT_TRUE(c.release().ok()); };
+  programs[2].start = [](ModuleContext& c) { c.setTimer(600 * program::kMillisecond, 0); };
+  programs[2].timer = [&](ModuleContext& c, int) {
+    for (const motion::Evaluation& e : c.motions()) {
+      const auto* m = std::get_if<motion::Motion>(&e);
+      if (m && m->rule == &stage.rule) {
+        ASSERT_TRUE(c.move(*m).ok());
+      }
+    }
+  };
+  Simulator simulator(stage.build(), table(), {});
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  const Status status = simulator.run();
+  ASSERT_FALSE(status.ok());
+  ASSERT_TRUE(simulator.violation().has_value());
+  EXPECT_EQ(simulator.violation()->module, world::ModuleId{3});
+  EXPECT_NE(status.error().find("let go of its piston"), std::string::npos) << status.error();
+  EXPECT_NE(status.error().find("event #"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace datomsim::sim

@@ -87,11 +87,11 @@ void GradientProgram::learn(program::ModuleContext& context, int direction, int3
     spread(context, cell, value);
 
     // As the pivot, every motion from that cell leads to a neighbour at value + 1.
-    for (const motion::Evaluation& evaluation : context.motionsAsPivot(cell)) {
-      if (const auto* motion = std::get_if<motion::Motion>(&evaluation)) {
-        const auto goal = geometry::directionOfOffset(motion->goal - context.cell());
-        if (goal && value + 1 < distances_[*goal]) pending.push_back({*goal, value + 1});
-      }
+    std::array<Cell, 6> goals;
+    const int count = context.goalsAsPivot(cell, goals);
+    for (int i = 0; i < count; ++i) {
+      const auto goal = geometry::directionOfOffset(goals[i] - context.cell());
+      if (goal && value + 1 < distances_[*goal]) pending.push_back({*goal, value + 1});
     }
   }
 }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 
 #include "geometry/cell.h"
 #include "program/module_program.h"
@@ -58,9 +59,13 @@ class Router {
 
   bool seen(const RoutedMsg& routed);
 
-  // Recently flooded messages (origin cell and request), so that each is forwarded once.
-  std::array<RoutedMsg, 16> recent_{};
-  int nextRecent_ = 0;
+  // Keys of recently flooded messages (origin, request, target), so that each is forwarded once.
+  // Allocated on the first flood: most modules never flood, and a module's idle state stays small.
+  struct Recent {
+    std::array<uint64_t, 16> keys{};
+    int next = 0;
+  };
+  std::unique_ptr<Recent> recent_;
 };
 
 }  // namespace datomsim::algorithms

@@ -11,13 +11,20 @@ inline double squaredDistance(const geometry::Cell& a, const geometry::Cell& b) 
 }
 
 inline bool Router::seen(const RoutedMsg& routed) {
-  for (const RoutedMsg& r : recent_) {
-    if (r.request == routed.request && r.origin == routed.origin && r.target == routed.target) {
-      return true;
-    }
+  // One 64-bit key per message: origin cell, request number and target cell, mixed.
+  uint64_t key = uint64_t(routed.request) * 0x9e3779b97f4a7c15ULL;
+  for (const int32_t v : {routed.origin.x, routed.origin.y, routed.origin.z, routed.target.x,
+                          routed.target.y, routed.target.z}) {
+    key = (key ^ uint32_t(v)) * 0xbf58476d1ce4e5b9ULL;
+    key ^= key >> 31;
   }
-  recent_[nextRecent_] = routed;
-  nextRecent_ = (nextRecent_ + 1) % int(recent_.size());
+  key |= 1;  // 0 marks an empty entry
+  if (!recent_) recent_ = std::make_unique<Recent>();
+  for (const uint64_t k : recent_->keys) {
+    if (k == key) return true;
+  }
+  recent_->keys[recent_->next] = key;
+  recent_->next = (recent_->next + 1) % int(recent_->keys.size());
   return false;
 }
 

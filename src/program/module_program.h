@@ -7,6 +7,7 @@
 // the world or another module directly. docs/simulation.md gives the semantics.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -68,6 +69,10 @@ class ModuleContext {
   // judged from this module's neighbourhood (the distributed gradient's view).
   virtual std::vector<motion::Evaluation> motionsAsPivot(
       const geometry::Cell& mobileCell) const = 0;
+  // The goals of the valid ones only, without building motions: the gradient's hot path. Writes
+  // up to 6 cells and returns how many.
+  virtual int goalsAsPivot(const geometry::Cell& mobileCell,
+                           std::array<geometry::Cell, 6>& goals) const = 0;
 
   // Starts a motion. The simulator checks at once that the rule still holds and that every module
   // of its deformation list has compressed its piston; a refusal comes back as the error. The

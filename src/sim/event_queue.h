@@ -4,8 +4,8 @@
 // order they were created, whatever the heap does: runs are reproducible (docs/simulation.md).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
-#include <queue>
 #include <vector>
 
 #include "program/message.h"
@@ -37,28 +37,50 @@ struct Event {
   program::Message message;
 };
 
+// A binary heap of small keys (time, sequence, slot); the events themselves stay put in a slab,
+// so that sifting moves 24 bytes instead of a whole event with its message.
 class EventQueue {
  public:
   void push(Event event) {
     event.sequence = nextSequence_++;
-    heap_.push(std::move(event));
+    uint32_t slot;
+    if (!freeSlots_.empty()) {
+      slot = freeSlots_.back();
+      freeSlots_.pop_back();
+      slots_[slot] = std::move(event);
+    } else {
+      slot = static_cast<uint32_t>(slots_.size());
+      slots_.push_back(std::move(event));
+    }
+    const Event& stored = slots_[slot];
+    heap_.push_back({stored.time, stored.sequence, slot});
+    std::push_heap(heap_.begin(), heap_.end(), Later{});
   }
   bool empty() const { return heap_.empty(); }
   size_t size() const { return heap_.size(); }
-  const Event& top() const { return heap_.top(); }
+  const Event& top() const { return slots_[heap_.front().slot]; }
   Event pop() {
-    Event event = heap_.top();
-    heap_.pop();
-    return event;
+    std::pop_heap(heap_.begin(), heap_.end(), Later{});
+    const uint32_t slot = heap_.back().slot;
+    heap_.pop_back();
+    freeSlots_.push_back(slot);
+    return std::move(slots_[slot]);
   }
 
  private:
+  struct Key {
+    Time time;
+    uint64_t sequence;
+    uint32_t slot;
+  };
   struct Later {
-    bool operator()(const Event& a, const Event& b) const {
+    bool operator()(const Key& a, const Key& b) const {
       return a.time != b.time ? a.time > b.time : a.sequence > b.sequence;
     }
   };
-  std::priority_queue<Event, std::vector<Event>, Later> heap_;
+  std::vector<Key> heap_;
+  std::vector<Event> slots_;
+  std::vector<uint32_t> freeSlots_;
   uint64_t nextSequence_ = 0;
 };
 

@@ -103,6 +103,9 @@ class Simulator::Context final : public program::ModuleContext {
   std::vector<motion::Evaluation> motionsAsPivot(const Cell& mobileCell) const override {
     return simulator_.motionsAsPivot(index_, mobileCell);
   }
+  int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals) const override {
+    return simulator_.goalsAsPivot(index_, mobileCell, goals);
+  }
   Status move(const motion::Motion& motion) override {
     return simulator_.startMotion(index_, motion);
   }
@@ -220,8 +223,13 @@ void Simulator::dispatch(const Event& event) {
       if (program) program->onStart(context);
       break;
     case EventKind::kMessage: {
-      auto& count = statistics_.messagesByType[std::string(event.message.typeName())];
-      ++count;
+      // Look up by view first: a std::string per message would dominate message-heavy runs.
+      const std::string_view type = event.message.typeName();
+      auto count = statistics_.messagesByType.find(type);
+      if (count == statistics_.messagesByType.end()) {
+        count = statistics_.messagesByType.emplace(std::string(type), 0).first;
+      }
+      ++count->second;
       if (program) program->onMessage(context, event.argument, event.message);
       break;
     }
@@ -398,6 +406,22 @@ std::vector<motion::Evaluation> Simulator::motionsAsPivot(uint32_t index, const 
     out.push_back(motion::evaluate(world_, rules[i], mobile, options_.rules));
   }
   return out;
+}
+
+int Simulator::goalsAsPivot(uint32_t index, const Cell& cell, std::array<Cell, 6>& goals) const {
+  const Module& pivot = world_.modules()[index];
+  const auto direction = geometry::directionOfOffset(cell - pivot.cell);
+  if (!direction || world_.cellState(cell) == world::CellState::kSolid) return 0;
+  const motion::Mobile mobile{cell, options_.mobile};
+  if (motion::fixedModuleAt(world_, cell, mobile)) return 0;
+  int count = 0;
+  const motion::Rule* rules = table_.rulesForMobileDirection(*direction);
+  for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
+    if (motion::holds(world_, rules[i], mobile, options_.rules)) {
+      goals[count++] = pivot.cell + rules[i].goalOffset;
+    }
+  }
+  return count;
 }
 
 Status Simulator::startMotion(uint32_t index, const motion::Motion& request) {

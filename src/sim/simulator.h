@@ -104,6 +104,8 @@ class Simulator {
   Status startMotion(uint32_t index, const motion::Motion& motion);
   std::vector<motion::Evaluation> motionsOf(uint32_t index) const;
   std::vector<motion::Evaluation> motionsAsPivot(uint32_t index, const geometry::Cell& cell) const;
+  int goalsAsPivot(uint32_t index, const geometry::Cell& cell,
+                   std::array<geometry::Cell, 6>& goals) const;
 
   // Event handlers.
   void dispatch(const Event& event);

@@ -26,19 +26,28 @@ for package in "${packages[@]}"; do
   fi
 done
 
-if ((${#missing[@]} == 0)); then
-  exit 0
+if ((${#missing[@]} > 0)); then
+  echo "install-deps: installing ${missing[*]}"
+  run_as_root=()
+  if [[ "$(id -u)" != 0 ]]; then
+    if ! command -v sudo >/dev/null; then
+      echo "install-deps: need root or sudo to install: ${missing[*]}" >&2
+      exit 1
+    fi
+    run_as_root=(sudo)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${run_as_root[@]}" apt-get update -qq
+  "${run_as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "install-deps: installing ${missing[*]}"
-run_as_root=()
-if [[ "$(id -u)" != 0 ]]; then
-  if ! command -v sudo >/dev/null; then
-    echo "install-deps: need root or sudo to install: ${missing[*]}" >&2
-    exit 1
+# The browser viewer's packages (three.js, esbuild), pinned by viewer/package-lock.json; only
+# when missing or older than the lock file.
+viewer="$(dirname "$0")/../viewer"
+if [[ "${DATOMSIM_SKIP_BROWSER:-0}" != 1 ]]; then
+  if [[ ! -d "$viewer/node_modules" || "$viewer/package-lock.json" -nt "$viewer/node_modules" ]]; then
+    echo "install-deps: installing the viewer's npm packages"
+    npm --prefix "$viewer" ci --no-audit --no-fund --loglevel=error
+    touch "$viewer/node_modules"
   fi
-  run_as_root=(sudo)
 fi
-export DEBIAN_FRONTEND=noninteractive
-"${run_as_root[@]}" apt-get update -qq
-"${run_as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

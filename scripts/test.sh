@@ -2,7 +2,8 @@
 # Builds datomsim and runs every check: formatting, the unit and scenario tests (release build,
 # warnings as errors), the same tests under AddressSanitizer and UndefinedBehaviorSanitizer, a
 # determinism check across optimisation levels, a smoke run of the benchmarks, and the viewer's
-# tests. Exits non-zero on the first failure.
+# tests (unit, then end to end in headless Chromium; DATOMSIM_SKIP_BROWSER=1 skips them). Exits
+# non-zero on the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -32,3 +33,9 @@ echo "traces identical ($(wc -l < "$scratch/release.jsonl") lines)"
 
 echo "== benchmarks (smoke run)"
 scripts/bench.sh --smoke
+
+if [[ "${DATOMSIM_SKIP_BROWSER:-0}" != 1 ]]; then
+  echo "== viewer: unit tests, then end to end in headless Chromium"
+  npm --prefix viewer test
+  node viewer/e2e/view.e2e.mjs --datomsim build/release/bin/datomsim --shots build/viewer-shots
+fi

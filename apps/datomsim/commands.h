@@ -22,6 +22,8 @@ void addSceneCommands(CLI::App& app);   // generate, convert, info
 void addMotionCommands(CLI::App& app);  // reach, moves, verify
 void addRunCommand(CLI::App& app);
 void addDemoCommand(CLI::App& app);
+void addViewCommand(CLI::App& app);
+void addMeshCommand(CLI::App& app);
 
 // A check that ran and found a problem (e.g. counterexamples); exit status 1.
 class CheckFailed : public std::runtime_error {

@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "experiment/paper.h"
 #include "experiment/run.h"
+#include "export/viewer_page.h"
 #include "io/scene_file.h"
 #include "render/distance_map.h"
 #include "scene/paper_arch.h"
@@ -39,6 +40,12 @@ void addDemoCommand(CLI::App& app) {
     std::filesystem::create_directories(folder, error);
     if (error) throw UsageError("cannot create " + args->out + ": " + error.message());
 
+    // The viewer's script, if it was built (docs/viewer.md); the rest of the demo does without.
+    const auto directory = exporting::executableDirectory();
+    const auto bundle = directory.ok() ? exporting::loadViewerBundle("", *directory)
+                                       : Result<std::string>(Error{directory.error()});
+    if (!bundle.ok()) fmt::print(stderr, "no viewer pages: {}\n", bundle.error());
+
     const motion::RuleTable table;
     const experiment::PaperExperiment experiment = unwrap(experiment::runPaperExperiment(table));
     nlohmann::ordered_json summary;
@@ -58,6 +65,12 @@ void addDemoCommand(CLI::App& app) {
                     (folder / (name + "-distances.svg")).string());
       writeOutput((folder / (name + "-trace.jsonl")).string(), result.run.trace);
       writeOutput((folder / (name + "-run.json")).string(), runJson("follow-gradient", result.run));
+      if (bundle.ok()) {
+        check(exporting::writeViewerPage(
+            folder / (name + "-viewer.html"), *bundle,
+            {title, result.run.trace,
+             exporting::overlayJson(result.distances.sorted(), result.path, scene::kPaperGoal)}));
+      }
 
       nlohmann::ordered_json entry;
       entry["scene"] = name;

@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   datomsim::app::addMotionCommands(app);
   datomsim::app::addRunCommand(app);
   datomsim::app::addDemoCommand(app);
+  datomsim::app::addViewCommand(app);
+  datomsim::app::addMeshCommand(app);
 
   try {
     app.parse(argc, argv);

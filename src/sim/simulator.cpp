@@ -537,10 +537,10 @@ Status Simulator::startMotion(uint32_t index, const motion::Motion& request) {
                                    geometry::toString(plan.goal)));
     trace_->piston(now_, p.id, pivotPiston, 0, 1, options_.quarterTurnTime);
     trace_->piston(now_, m.id, mobilePiston, 0, 1, options_.quarterTurnTime);
-    const geometry::Vec3 hinge =
-        (geometry::worldPosition(p.cell, s) + geometry::worldPosition(m.cell, s)) * 0.5;
+    const geometry::Vec3 hinge = trace_->hinge(geometry::worldPosition(p.cell, s), rule.up,
+                                               geometry::oppositeAxis(rule.front));
     trace_->turn(now_, m.id, geometry::axisVector(firstTurnAxis), hinge, 90.0,
-                 options_.quarterTurnTime);
+                 options_.quarterTurnTime, true);
   }
   schedule(now_ + options_.quarterTurnTime, EventKind::kMotionMiddle, index, slot);
   return Ok{};
@@ -595,11 +595,10 @@ void Simulator::motionResume(int slot) {
     trace_->piston(now_, pivot.id, states_[active.pivot].piston, 1, 0, options_.quarterTurnTime);
     trace_->piston(now_, mobile.id, states_[active.mobile].piston, 1, 0, options_.quarterTurnTime);
     const geometry::Vec3 hinge =
-        (geometry::worldPosition(pivot.cell, s) + geometry::worldPosition(active.plan.goal, s)) *
-        0.5;
+        trace_->hinge(geometry::worldPosition(pivot.cell, s), rule.up, active.goalAxis);
     trace_->turn(now_, mobile.id,
                  geometry::axisVector(*geometry::crossAxes(rule.up, active.goalAxis)), hinge, 90.0,
-                 options_.quarterTurnTime);
+                 options_.quarterTurnTime, false);
   }
   schedule(now_ + options_.quarterTurnTime, EventKind::kMotionEnd, active.mobile, slot);
 }

@@ -129,7 +129,7 @@ void TraceRecorder::header(const world::World& world, const std::string& descrip
     fmt::format_to(out,
                    "{}{{\"id\":{},\"cell\":[{},{},{}],\"pos\":{},\"o\":{},\"rgb\":[{},{},{}],"
                    "\"latches\":{}}}",
-                   first ? "" : ",\n", m.id.value, m.cell.x, m.cell.y, m.cell.z,
+                   first ? "" : ",", m.id.value, m.cell.x, m.cell.y, m.cell.z,
                    vec(geometry::worldPosition(m.cell, spacing())), m.orientation.code(), m.color.r,
                    m.color.g, m.color.b, m.latches);
     first = false;
@@ -145,11 +145,32 @@ void TraceRecorder::piston(program::Time t, world::ModuleId module, int ownPisto
 }
 
 void TraceRecorder::turn(program::Time t, world::ModuleId module, const Vec3& axis,
-                         const Vec3& centre, double degrees, program::Time duration) {
-  fmt::format_to(
-      std::back_inserter(text_),
-      "{{\"t\":{},\"turn\":{{\"m\":{},\"axis\":{},\"centre\":{},\"deg\":{},\"d\":{}}}}}\n",
-      seconds(t), module.value, vec(axis), vec(centre), number(degrees), seconds(duration));
+                         const Vec3& centre, double degrees, program::Time duration,
+                         bool compressing) {
+  // The body turns twice as far as each connector (pivot's and mobile's turn together): the
+  // fraction turned is theta(f) / 45 degrees, with f going 0 -> 1, or 1 -> 0 on the way back.
+  std::string progress;
+  for (int k = 0; k < kSamples; ++k) {
+    const double u = double(k) / (kSamples - 1);
+    const double turned =
+        compressing ? datom::solveLinkage(dimensions_, u)->connectorTurn / 45.0
+                    : 1.0 - datom::solveLinkage(dimensions_, 1.0 - u)->connectorTurn / 45.0;
+    if (k) progress += ',';
+    progress += number(turned);
+  }
+  fmt::format_to(std::back_inserter(text_),
+                 "{{\"t\":{},\"turn\":{{\"m\":{},\"axis\":{},\"centre\":{},\"deg\":{},"
+                 "\"d\":{},\"progress\":[{}]}}}}\n",
+                 seconds(t), module.value, vec(axis), vec(centre), number(degrees),
+                 seconds(duration), progress);
+}
+
+Vec3 TraceRecorder::hinge(const Vec3& pivot, int up, int side) const {
+  // Compressed, the pivot's connectors lie in the plane at c/2 + e along U; the hinge edge is
+  // (r + c/2) / sqrt2 out towards the side (datom/piston_pose.h).
+  const datom::Dimensions& d = dimensions_;
+  return pivot + geometry::axisVector(up) * (d.connectorWidth() / 2 + d.linkLength()) +
+         geometry::axisVector(side) * ((d.radius() + d.connectorWidth() / 2) / std::sqrt(2.0));
 }
 
 void TraceRecorder::place(program::Time t, world::ModuleId module, const geometry::Cell& cell,

@@ -29,9 +29,16 @@ class TraceRecorder {
   void piston(program::Time t, world::ModuleId module, int ownPiston, double from, double to,
               program::Time duration);
   // A mobile's body turns by `degrees` about the world axis through `centre` (world
-  // coordinates), from time t for `duration`.
+  // coordinates), from time t for `duration`. The turn follows the pistons: `compressing` for
+  // the first quarter turn (pistons going to 1), not for the second (back to 0); the record
+  // carries the fraction turned at equal time steps, from the mechanism (docs/trace-format.md).
   void turn(program::Time t, world::ModuleId module, const geometry::Vec3& axis,
-            const geometry::Vec3& centre, double degrees, program::Time duration);
+            const geometry::Vec3& centre, double degrees, program::Time duration, bool compressing);
+
+  // The hinge a mobile turns about: the outer edge of the pivot's connector towards `side`
+  // (world axis: -F for the first quarter turn, G for the second) when the pivot's piston `up`
+  // is compressed, where the latched faces meet (datom-model.md).
+  geometry::Vec3 hinge(const geometry::Vec3& pivot, int up, int side) const;
   void place(program::Time t, world::ModuleId module, const geometry::Cell& cell,
              geometry::Orientation orientation);
   void latch(program::Time t, world::ModuleId a, int connectorA, world::ModuleId b, int connectorB,

@@ -136,6 +136,11 @@ export class App {
       this.view.setOverlayVisible(on);
       this.view.render();
     });
+    this.focusToggle = checkbox('focus', false, (on) => {
+      this.view.focus = on;
+      this.redraw();
+    });
+    this.focusToggle.wrapper.title = 'Fade every module but the selected one and those deforming or moving (X)';
     this.latchesToggle = checkbox('latches', false, (on) => {
       this.view.showLatches = on;
       this.redraw();
@@ -170,6 +175,7 @@ export class App {
         this.labelsToggle.wrapper,
         this.overlayToggle.wrapper,
         this.latchesToggle.wrapper,
+        this.focusToggle.wrapper,
         this.schemeSelect,
         button('fit', 'Fit the scene (F)', () => this.view.fit()),
         button('top', 'Seen from the top, as the paper\'s distance maps (T)', () => this.view.fit('top')),
@@ -180,7 +186,7 @@ export class App {
     this.panel.hidden = true;
     this.help = element('div', {
       className: 'dv-help',
-      text: 'drag: orbit \u00B7 right-drag: pan \u00B7 wheel: zoom \u00B7 click: module \u00B7 space: play \u00B7 \u2190 \u2192: step \u00B7 F: fit \u00B7 T: top \u00B7 L: labels',
+      text: 'drag: orbit \u00B7 right-drag: pan \u00B7 wheel: zoom \u00B7 click: module \u00B7 space: play \u00B7 \u2190 \u2192: step \u00B7 F: fit \u00B7 T: top \u00B7 L: labels \u00B7 X: focus',
     });
     this.root.append(this.canvasHolder, this.top, this.panel, this.help, this.bar);
   }
@@ -232,6 +238,10 @@ export class App {
           this.view.setLabelsVisible(this.labelsToggle.input.checked);
           this.view.render();
           return;
+        case 'x':
+        case 'X':
+          this.setFocus(!this.view.focus);
+          return;
         case 'Escape':
           this.select(-1);
           return;
@@ -257,6 +267,12 @@ export class App {
     this.timeLabel.textContent = `${formatTime(this.time)} / ${formatTime(this.duration)}`;
     this.noteLine.textContent = frame.note ? `${formatTime(frame.note.t)}: ${frame.note.text}` : '';
     this.updatePanel();
+  }
+
+  setFocus(on) {
+    this.focusToggle.input.checked = on;
+    this.view.focus = on;
+    this.redraw();
   }
 
   pauseAndSeek(t) {
@@ -337,6 +353,7 @@ export class App {
       latched.push(partner ? `${c} \u2192 ${partner.m}:${partner.c}` : String(c));
     }
     rows.push(['latches', latched.length ? latched.join(', ') : 'none']);
+    rows.push(['', 'own connector \u2192 module:its connector']);
     const swatch = element('span', { className: 'dv-swatch' });
     swatch.style.background = rgbToCss(m.rgb);
     this.panel.replaceChildren(
@@ -378,6 +395,12 @@ export class App {
         this.view.setLabelsVisible(on);
         this.view.render();
       },
+      setOverlay: (on) => {
+        this.overlayToggle.input.checked = on;
+        this.view.setOverlayVisible(on);
+        this.view.render();
+      },
+      setFocus: (on) => this.setFocus(on),
       setLatches: (on) => {
         this.latchesToggle.input.checked = on;
         this.view.showLatches = on;

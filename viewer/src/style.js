@@ -3,6 +3,7 @@ export const STYLE = `
 html, body { margin: 0; height: 100%; overflow: hidden; background: #e9edf2;
   font: 13px/1.35 system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans", sans-serif; color: #1d2430; }
 #datomsim-viewer { position: fixed; inset: 0; }
+#datomsim-viewer [hidden] { display: none !important; }
 .dv-canvas { position: absolute; inset: 0 0 52px 0; }
 .dv-canvas canvas { display: block; }
 .dv-labels { position: absolute; top: 0; left: 0; pointer-events: none; }

@@ -86,6 +86,15 @@ export class Timeline {
       note: null,
       end: null,
     };
+    // Partners of the scene's initial latches: the module each latched connector faces.
+    const byCell = new Map(initial.modules.map((m) => [cellKey(m.cell), m]));
+    for (const m of initial.modules) {
+      for (let c = 0; c < 12; ++c) {
+        if (!(m.latches & (1 << c))) continue;
+        const partner = this.facingPartner(m, byCell, c);
+        if (partner) m.partners.set(c, partner);
+      }
+    }
     this.checkpoints = [cloneState(initial)];
     const state = initial;
     for (let e = 0; e < this.events.length; ++e) {
@@ -239,20 +248,21 @@ export class Timeline {
     return { t, modules, note: state.note, end: state.end };
   }
 
-  // The module a latched own connector holds: the partner named by a latch change, or else the
-  // module in the neighbour cell that connector faces (for latches of the initial scene).
+  // The module a latched own connector holds, {m: id, c: its connector}, or null when unknown:
+  // the partner of the scene's initial latches, or the one a latch change named.
   latchPartner(frame, index, connector) {
-    const m = frame.modules[index];
-    const known = m.partners.get(connector);
-    if (known) return known;
-    if (m.inTransit) return null;
+    return frame.modules[index].partners.get(connector) ?? null;
+  }
+
+  // The module in the neighbour cell an own connector of module m faces ({m: id, c: its connector
+  // facing back}), from a map cell key -> module; null when that cell is empty.
+  facingPartner(m, byCell, connector) {
     const rows = this.header.orientations[m.o];
     const v = directionVector(connector);
     const world = rows.map((row) => row[0] * v[0] + row[1] * v[1] + row[2] * v[2]);
     const direction = nearestDirection(world);
     const neighbourCell = addCells(m.cell, NEIGHBOUR_OFFSETS[direction]);
-    const key = cellKey(neighbourCell);
-    const other = frame.modules.find((n) => !n.inTransit && cellKey(n.cell) === key);
+    const other = byCell.get(cellKey(neighbourCell));
     if (!other) return null;
     // The neighbour's own connector facing back.
     const back = (direction + 6) % 12;

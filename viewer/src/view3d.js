@@ -12,7 +12,7 @@ import { cellToWorld } from './lattice.js';
 // has t = 0: its plates would be invisible).
 export const MIN_THICKNESS = 0.06;
 // Side of a distance square, and radius of the path line, in lattice spacings.
-export const DISTANCE_CUBE_SIDE = 0.3;
+export const DISTANCE_CUBE_SIDE = 0.24;
 export const PATH_RADIUS = 0.035;
 
 const BACKGROUND = 0xe9edf2;
@@ -89,6 +89,20 @@ export class View3D {
     this.mesh.frustumCulled = false;
     for (let i = 0; i < count; ++i) this.mesh.setColorAt(i, new THREE.Color(1, 1, 1));
     this.scene.add(this.mesh);
+    // Focus mode draws the modules out of focus here, faded; an instance is drawn by one mesh
+    // and collapsed to nothing in the other.
+    this.ghostMesh = new THREE.InstancedMesh(
+      geometry,
+      new THREE.MeshLambertMaterial({ transparent: true, opacity: 0.07, depthWrite: false }),
+      Math.max(1, count),
+    );
+    this.ghostMesh.count = count;
+    this.ghostMesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
+    this.ghostMesh.frustumCulled = false;
+    for (let i = 0; i < count; ++i) this.ghostMesh.setColorAt(i, new THREE.Color(1, 1, 1));
+    this.scene.add(this.ghostMesh);
+    this.focus = false;
+    this.collapsed = new THREE.Matrix4().makeScale(0, 0, 0);
     this.partPose = { centre: new THREE.Vector3(), quaternion: new THREE.Quaternion(), size: new THREE.Vector3() };
   }
 
@@ -245,6 +259,9 @@ export class View3D {
     for (const m of frame.modules) {
       moduleMatrix.compose(m.position, m.quaternion, one);
       const selected = m.index === this.selected;
+      // In focus mode only the selected module and the modules deforming or moving stay solid.
+      const solid = !this.focus || selected || m.piston >= 0 || m.inTransit;
+      const [shown, hidden] = solid ? [this.mesh, this.ghostMesh] : [this.ghostMesh, this.mesh];
       for (let i = 0; i < parts; ++i) {
         const part = kin.parts[i];
         kin.partPose(i, m.piston, m.fraction, pose);
@@ -252,20 +269,23 @@ export class View3D {
         partMatrix.compose(pose.centre, pose.quaternion, pose.size);
         partMatrix.premultiply(moduleMatrix);
         const instance = m.index * parts + i;
-        this.mesh.setMatrixAt(instance, partMatrix);
+        shown.setMatrixAt(instance, partMatrix);
+        hidden.setMatrixAt(instance, this.collapsed);
         let rgb = partColor(part.kind, m.rgb, this.scheme);
         if (this.showLatches && part.kind === 'connector' && m.latches & (1 << part.connector)) {
           rgb = LATCHED_CONNECTOR;
         }
         if (selected) rgb = mixRgb(rgb, [255, 255, 255], 0.45);
-        this.mesh.setColorAt(instance, color.copy(colorOf(rgb)));
+        shown.setColorAt(instance, color.copy(colorOf(rgb)));
       }
       const label = this.labels[m.index];
       label.position.copy(m.position);
     }
-    this.mesh.instanceMatrix.needsUpdate = true;
-    if (this.mesh.instanceColor) this.mesh.instanceColor.needsUpdate = true;
-    this.mesh.computeBoundingSphere();
+    for (const mesh of [this.mesh, this.ghostMesh]) {
+      mesh.instanceMatrix.needsUpdate = true;
+      if (mesh.instanceColor) mesh.instanceColor.needsUpdate = true;
+      mesh.computeBoundingSphere();
+    }
     this.frame = frame;
   }
 

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "geometry/cell.h"
 #include "motion/motion.h"
 
@@ -21,5 +23,23 @@ geometry::Cell parseCell(const std::string& option, const std::string& text);
 
 // "paper" | "strict" and "on" | "off".
 motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment);
+
+// The rule options every motion command takes: --rules and --attachment.
+struct RuleArguments {
+  std::string rules = "paper";
+  std::string attachment = "on";
+
+  void addTo(CLI::App& command) {
+    command.add_option("--rules", rules, "Rule table: paper (double deformation) or strict")
+        ->check(CLI::IsMember({"paper", "strict"}))
+        ->capture_default_str();
+    command
+        .add_option("--attachment", attachment,
+                    "Refuse deformations that would make a module let go: on or off")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
+  }
+  motion::RuleOptions options() const { return parseRuleOptions(rules, attachment); }
+};
 
 }  // namespace datomsim::app

@@ -14,23 +14,6 @@
 namespace datomsim::app {
 namespace {
 
-struct RuleArguments {
-  std::string rules = "paper";
-  std::string attachment = "on";
-
-  void addTo(CLI::App& command) {
-    command.add_option("--rules", rules, "Rule table: paper (double deformation) or strict")
-        ->check(CLI::IsMember({"paper", "strict"}))
-        ->capture_default_str();
-    command
-        .add_option("--attachment", attachment,
-                    "Refuse deformations that would make a module let go: on or off")
-        ->check(CLI::IsMember({"on", "off"}))
-        ->capture_default_str();
-  }
-  motion::RuleOptions options() const { return parseRuleOptions(rules, attachment); }
-};
-
 std::string ruleLabel(const motion::RuleOptions& options) {
   return fmt::format("rules {}, attachment {}", motion::toString(options.rules),
                      options.attachment ? "on" : "off");

@@ -33,7 +33,8 @@ std::string runJson(const std::string& program, const experiment::RunResult& res
 
 void addRunCommand(CLI::App& app) {
   struct Arguments {
-    std::string scene, program, goal, start, rules = "paper", attachment = "on", out, trace;
+    std::string scene, program, goal, start, out, trace;
+    RuleArguments rules;
     uint64_t seed = 1;
     double delayMs = 10, jitterMs = 0;
   };
@@ -48,12 +49,7 @@ void addRunCommand(CLI::App& app) {
   command->add_option("--start", args->start,
                       "The mobile's start x,y,z: the module there, else the one at the goal moved "
                       "there, else a new module");
-  command->add_option("--rules", args->rules, "paper or strict")
-      ->check(CLI::IsMember({"paper", "strict"}))
-      ->capture_default_str();
-  command->add_option("--attachment", args->attachment, "on or off")
-      ->check(CLI::IsMember({"on", "off"}))
-      ->capture_default_str();
+  args->rules.addTo(*command);
   command->add_option("--seed", args->seed, "Seed of the modules' random streams and delays")
       ->capture_default_str();
   command->add_option("--delay-ms", args->delayMs, "Message delay in milliseconds")
@@ -71,7 +67,7 @@ void addRunCommand(CLI::App& app) {
     request.program = args->program;
     request.goal = parseCell("--goal", args->goal);
     if (!args->start.empty()) request.start = parseCell("--start", args->start);
-    request.simulation.rules = parseRuleOptions(args->rules, args->attachment);
+    request.simulation.rules = args->rules.options();
     request.simulation.seed = args->seed;
     request.simulation.messageDelay = program::Time(args->delayMs * program::kMillisecond);
     request.simulation.messageJitter = program::Time(args->jitterMs * program::kMillisecond);

@@ -321,13 +321,7 @@ Status Simulator::compress(uint32_t index, int ownPiston) {
   for (const int direction : geometry::directionsOfAxis(axis)) {
     const int own = module.orientation.ownConnector(direction);
     if (!(module.latches & bit(own))) continue;
-    const Module* neighbour = world_.neighbour(module, direction);
-    if (trace_) {
-      trace_->latch(now_, module.id, own, neighbour->id,
-                    neighbour->orientation.ownConnector(geometry::oppositeDirection(direction)),
-                    false);
-    }
-    world_.setLatched(module.id, direction, false);
+    setLatch(module, direction, false);
   }
   if (trace_) trace_->piston(now_, module.id, ownPiston, 0, 1, options_.deformationTime);
   schedule(now_ + options_.deformationTime, EventKind::kDeformationDone, index, 0);
@@ -378,13 +372,18 @@ void Simulator::relatch(uint32_t index) {
                                      geometry::oppositeDirection(direction))) {
       continue;
     }
-    world_.setLatched(module.id, direction, true);
-    if (trace_) {
-      trace_->latch(now_, module.id, module.orientation.ownConnector(direction), neighbour->id,
-                    neighbour->orientation.ownConnector(geometry::oppositeDirection(direction)),
-                    true);
-    }
+    setLatch(module, direction, true);
   }
+}
+
+void Simulator::setLatch(const Module& module, int direction, bool latched) {
+  const Module* neighbour = world_.neighbour(module, direction);
+  if (trace_) {
+    trace_->latch(now_, module.id, module.orientation.ownConnector(direction), neighbour->id,
+                  neighbour->orientation.ownConnector(geometry::oppositeDirection(direction)),
+                  latched);
+  }
+  world_.setLatched(module.id, direction, latched);
 }
 
 // ---- Motions --------------------------------------------------------------------------------
@@ -502,25 +501,13 @@ Status Simulator::startMotion(uint32_t index, const motion::Motion& request) {
   const Module& m = world_.modules()[index];
   for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
     if (direction == geometry::oppositeDirection(rule.mobileDirection)) continue;
-    if (!world_.isLatched(m, direction)) continue;
-    const Module* neighbour = world_.neighbour(m, direction);
-    if (trace_) {
-      trace_->latch(now_, m.id, m.orientation.ownConnector(direction), neighbour->id,
-                    neighbour->orientation.ownConnector(geometry::oppositeDirection(direction)),
-                    false);
-    }
-    world_.setLatched(m.id, direction, false);
+    if (world_.isLatched(m, direction)) setLatch(m, direction, false);
   }
   const Module& p = world_.modules()[pivotIndex];
   for (const int direction : geometry::directionsOfAxis(rule.up)) {
-    if (direction == rule.mobileDirection || !world_.isLatched(p, direction)) continue;
-    const Module* neighbour = world_.neighbour(p, direction);
-    if (trace_) {
-      trace_->latch(now_, p.id, p.orientation.ownConnector(direction), neighbour->id,
-                    neighbour->orientation.ownConnector(geometry::oppositeDirection(direction)),
-                    false);
+    if (direction != rule.mobileDirection && world_.isLatched(p, direction)) {
+      setLatch(p, direction, false);
     }
-    world_.setLatched(p.id, direction, false);
   }
   const int pivotPiston = p.orientation.ownPiston(rule.up);
   const int mobilePiston = m.orientation.ownPiston(rule.front);

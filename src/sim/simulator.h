@@ -114,6 +114,9 @@ class Simulator {
   void motionResume(int slot);
   void motionEnd(int slot);
   void relatch(uint32_t index);
+  // Latches or releases the pair facing across a world direction (a neighbour must be there),
+  // and records it in the trace.
+  void setLatch(const world::Module& module, int direction, bool latched);
 
   void schedule(Time time, EventKind kind, uint32_t moduleIndex, int32_t argument,
                 const program::Message& message = {});

@@ -5,9 +5,11 @@
 
 namespace datomsim::algorithms {
 
-inline double squaredDistance(const geometry::Cell& a, const geometry::Cell& b) {
-  const geometry::Vec3 d = geometry::worldOffset(a - b, 1.0);
-  return geometry::dot(d, d);
+// Four times the squared world distance between two cells at spacing 1, in integers:
+// (2dx + dz)^2 + (2dy + dz)^2 + 2dz^2 (from the skew lattice's world position).
+inline int64_t squaredDistance4(const geometry::Cell& a, const geometry::Cell& b) {
+  const int64_t dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+  return (2 * dx + dz) * (2 * dx + dz) + (2 * dy + dz) * (2 * dy + dz) + 2 * dz * dz;
 }
 
 inline bool Router::seen(const RoutedMsg& routed) {
@@ -32,15 +34,15 @@ template <typename Send>
 void Router::forward(program::ModuleContext& context, const RoutedMsg& routed, int arrivedThrough,
                      Send&& sendThrough) {
   const uint16_t latched = context.latchedConnectors();
-  const double own = squaredDistance(context.cell(), routed.target);
+  const int64_t own = squaredDistance4(context.cell(), routed.target);
   if (!routed.flooding) {
     // Greedy: the latched neighbour nearest to the target, if nearer than this module.
     int best = -1;
-    double bestDistance = own;
+    int64_t bestDistance = own;
     for (int connector = 0; connector < geometry::kDirectionCount; ++connector) {
       if (!(latched & (1u << connector))) continue;
-      const double d = squaredDistance(context.cellBehind(connector), routed.target);
-      if (d < bestDistance - 1e-9) {
+      const int64_t d = squaredDistance4(context.cellBehind(connector), routed.target);
+      if (d < bestDistance) {
         bestDistance = d;
         best = connector;
       }

@@ -4,8 +4,9 @@
 // order they were created, whatever the heap does: runs are reproducible (docs/simulation.md).
 #pragma once
 
-#include <algorithm>
 #include <cstdint>
+#include <deque>
+#include <map>
 #include <vector>
 
 #include "program/message.h"
@@ -37,50 +38,32 @@ struct Event {
   program::Message message;
 };
 
-// A binary heap of small keys (time, sequence, slot); the events themselves stay put in a slab,
-// so that sifting moves 24 bytes instead of a whole event with its message.
+// Events grouped by time: one first-in first-out bucket per distinct time, buckets ordered by
+// time. Within a bucket, events keep the order they were pushed in, which is their sequence
+// order, so the queue yields exactly (time, sequence) order. Message delays are few distinct
+// values, so a push is a lookup among a few buckets and a pop is O(1).
 class EventQueue {
  public:
   void push(Event event) {
     event.sequence = nextSequence_++;
-    uint32_t slot;
-    if (!freeSlots_.empty()) {
-      slot = freeSlots_.back();
-      freeSlots_.pop_back();
-      slots_[slot] = std::move(event);
-    } else {
-      slot = static_cast<uint32_t>(slots_.size());
-      slots_.push_back(std::move(event));
-    }
-    const Event& stored = slots_[slot];
-    heap_.push_back({stored.time, stored.sequence, slot});
-    std::push_heap(heap_.begin(), heap_.end(), Later{});
+    buckets_[event.time].push_back(std::move(event));
+    ++size_;
   }
-  bool empty() const { return heap_.empty(); }
-  size_t size() const { return heap_.size(); }
-  const Event& top() const { return slots_[heap_.front().slot]; }
+  bool empty() const { return size_ == 0; }
+  size_t size() const { return size_; }
+  const Event& top() const { return buckets_.begin()->second.front(); }
   Event pop() {
-    std::pop_heap(heap_.begin(), heap_.end(), Later{});
-    const uint32_t slot = heap_.back().slot;
-    heap_.pop_back();
-    freeSlots_.push_back(slot);
-    return std::move(slots_[slot]);
+    auto first = buckets_.begin();
+    Event event = std::move(first->second.front());
+    first->second.pop_front();
+    if (first->second.empty()) buckets_.erase(first);
+    --size_;
+    return event;
   }
 
  private:
-  struct Key {
-    Time time;
-    uint64_t sequence;
-    uint32_t slot;
-  };
-  struct Later {
-    bool operator()(const Key& a, const Key& b) const {
-      return a.time != b.time ? a.time > b.time : a.sequence > b.sequence;
-    }
-  };
-  std::vector<Key> heap_;
-  std::vector<Event> slots_;
-  std::vector<uint32_t> freeSlots_;
+  std::map<Time, std::deque<Event>> buckets_;
+  size_t size_ = 0;
   uint64_t nextSequence_ = 0;
 };
 

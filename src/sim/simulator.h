@@ -114,6 +114,8 @@ class Simulator {
   void motionResume(int slot);
   void motionEnd(int slot);
   void relatch(uint32_t index);
+  // The statistics' counter of a message type.
+  uint64_t& messageCounter(std::string_view type);
   // Latches or releases the pair facing across a world direction (a neighbour must be there),
   // and records it in the trace.
   void setLatch(const world::Module& module, int direction, bool latched);
@@ -139,6 +141,7 @@ class Simulator {
   Random delayRandom_;
   const Event* current_ = nullptr;
   std::vector<uint32_t> touched_;  // modules whose pistons changed during the current event
+  std::vector<std::pair<const char*, uint64_t*>> messageCounters_;  // by type name's address
 };
 
 }  // namespace datomsim::sim

@@ -3,7 +3,7 @@
 // Every fixed module stores the distance of each of its 12 neighbouring cells (how many motions a
 // mobile needs from there to the goal G). The modules around G start with 0. A module that learns
 // a better distance for a neighbouring cell X judges, as the pivot, every rule that moves a mobile
-// imagined at X (from its own neighbourhood, ModuleContext::motionsAsPivot); each valid goal Y, a
+// imagined at X (from its own neighbourhood, ModuleContext::goalsAsPivot); each valid goal Y, a
 // neighbour of the pivot too, gets distance(X) + 1 if that is better. Every improvement is sent in
 // to every module around the cell: in a DistanceMsg to a latched neighbour, or routed hop by hop
 // (DistanceNotice) to the others, which the module senses as it senses the cells of a rule. Only

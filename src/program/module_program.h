@@ -65,12 +65,9 @@ class ModuleContext {
   // Every rule for this module as the mobile, valid or refused (paper, Algorithm 1:
   // getAllValidRules).
   virtual std::vector<motion::Evaluation> motions() const = 0;
-  // Every rule with this module as the pivot and the mobile imagined in a neighbouring cell,
-  // judged from this module's neighbourhood (the distributed gradient's view).
-  virtual std::vector<motion::Evaluation> motionsAsPivot(
-      const geometry::Cell& mobileCell) const = 0;
-  // The goals of the valid ones only, without building motions: the gradient's hot path. Writes
-  // up to 6 cells and returns how many.
+  // The goals of the rules that hold with this module as the pivot and the mobile imagined in a
+  // neighbouring cell, judged from this module's neighbourhood (the distributed gradient's view),
+  // without building the motions. Writes up to 6 cells and returns how many.
   virtual int goalsAsPivot(const geometry::Cell& mobileCell,
                            std::array<geometry::Cell, 6>& goals) const = 0;
 

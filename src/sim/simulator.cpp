@@ -100,9 +100,6 @@ class Simulator::Context final : public program::ModuleContext {
   Status release() override { return simulator_.release(index_); }
   int compressedPiston() const override { return simulator_.states_[index_].piston; }
   std::vector<motion::Evaluation> motions() const override { return simulator_.motionsOf(index_); }
-  std::vector<motion::Evaluation> motionsAsPivot(const Cell& mobileCell) const override {
-    return simulator_.motionsAsPivot(index_, mobileCell);
-  }
   int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals) const override {
     return simulator_.goalsAsPivot(index_, mobileCell, goals);
   }
@@ -396,20 +393,6 @@ void Simulator::setLatch(const Module& module, int direction, bool latched) {
 std::vector<motion::Evaluation> Simulator::motionsOf(uint32_t index) const {
   const Module& module = world_.modules()[index];
   return motion::evaluateAll(world_, table_, {module.cell, module.id}, options_.rules);
-}
-
-std::vector<motion::Evaluation> Simulator::motionsAsPivot(uint32_t index, const Cell& cell) const {
-  const Module& pivot = world_.modules()[index];
-  const auto direction = geometry::directionOfOffset(cell - pivot.cell);
-  if (!direction || world_.cellState(cell) == world::CellState::kSolid) return {};
-  const motion::Mobile mobile{cell, options_.mobile};
-  if (motion::fixedModuleAt(world_, cell, mobile)) return {};
-  std::vector<motion::Evaluation> out;
-  const motion::Rule* rules = table_.rulesForMobileDirection(*direction);
-  for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
-    out.push_back(motion::evaluate(world_, rules[i], mobile, options_.rules));
-  }
-  return out;
 }
 
 int Simulator::goalsAsPivot(uint32_t index, const Cell& cell, std::array<Cell, 6>& goals) const {

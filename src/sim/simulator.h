@@ -103,7 +103,6 @@ class Simulator {
   Status release(uint32_t index);
   Status startMotion(uint32_t index, const motion::Motion& motion);
   std::vector<motion::Evaluation> motionsOf(uint32_t index) const;
-  std::vector<motion::Evaluation> motionsAsPivot(uint32_t index, const geometry::Cell& cell) const;
   int goalsAsPivot(uint32_t index, const geometry::Cell& cell,
                    std::array<geometry::Cell, 6>& goals) const;
 

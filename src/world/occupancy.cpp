@@ -39,10 +39,6 @@ void Occupancy::erase(const geometry::Cell& cell) {
   }
 }
 
-void Occupancy::clear() {
-  *this = Occupancy();
-}
-
 void Occupancy::shrinkToFit() {
   if (sparse_ || count_ == 0) return;
   // The tight box, in grid coordinates of the current box.

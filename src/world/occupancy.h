@@ -31,7 +31,6 @@ class Occupancy {
   // Stores a value (not kEmpty) at a cell, replacing any.
   void insert(const geometry::Cell& cell, uint32_t value);
   void erase(const geometry::Cell& cell);
-  void clear();
   // Shrinks the dense box to the cells in use, dropping the slack left for growth.
   void shrinkToFit();
 

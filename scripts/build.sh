@@ -11,8 +11,10 @@ case "$flavour" in
   *) echo "build.sh: unknown flavour '$flavour' (release or sanitize)" >&2; exit 2 ;;
 esac
 
-cmake -S . -B "build/$flavour" -DDATOMSIM_WERROR=ON "${options[@]}" > "build-$flavour.log" 2>&1 ||
-  { cat "build-$flavour.log" >&2; exit 1; }
-cmake --build "build/$flavour" -j "$(nproc)" >> "build-$flavour.log" 2>&1 ||
-  { grep -E "error|Error" -A5 "build-$flavour.log" | head -60 >&2; exit 1; }
-rm -f "build-$flavour.log"
+# The compiler's chatter goes to a log; only errors are shown.
+mkdir -p build
+log="build/$flavour.log"
+cmake -S . -B "build/$flavour" -DDATOMSIM_WERROR=ON "${options[@]}" > "$log" 2>&1 ||
+  { cat "$log" >&2; exit 1; }
+cmake --build "build/$flavour" -j "$(nproc)" >> "$log" 2>&1 ||
+  { grep -E "error|Error" -A5 "$log" | head -60 >&2; echo "build.sh: full log in $log" >&2; exit 1; }

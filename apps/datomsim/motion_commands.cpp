@@ -9,7 +9,6 @@
 #include "motion/bidirectionality.h"
 #include "motion/reach.h"
 #include "motion_json.h"
-#include "render/distance_map.h"
 
 namespace datomsim::app {
 namespace {

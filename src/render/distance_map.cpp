@@ -229,7 +229,9 @@ DistanceMapLayout layoutOf(const Scene& scene, const DistanceMapPicture& picture
   layout.legendLeft = layout.mapLeft + layout.mapWidth + std::round(font * 1.5);
   layout.legendTop = layout.mapTop;
   const double rowHeight = font * kLegendRowHeight;
-  layout.legendRowsPerColumn = std::max(8, static_cast<int>(layout.mapHeight / rowHeight));
+  // A column may run a few rows past the map's foot before wrapping: one column reads better
+  // than a second that splits a group (the paper's scenes need about 25 rows).
+  layout.legendRowsPerColumn = std::max(8, static_cast<int>(layout.mapHeight / rowHeight) + 10);
   double widestLabel = 0;
   for (const LegendRow& row : scene.legend) {
     widestLabel = std::max(widestLabel, estimatedTextWidth(row.label, font));

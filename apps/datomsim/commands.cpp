@@ -12,7 +12,7 @@ void check(const Status& status) {
 }
 
 void writeOutput(const std::string& path, const std::string& text) {
-  if (path.empty()) {
+  if (path.empty() || path == "-") {
     std::fwrite(text.data(), 1, text.size(), stdout);
     return;
   }

@@ -42,7 +42,7 @@ void check(const Status& status);
 // The JSON result of `run` (see docs/file-formats.md).
 std::string runJson(const std::string& program, const experiment::RunResult& result);
 
-// Writes text to a file atomically, or to standard output when the path is empty.
+// Writes text to a file atomically, or to standard output when the path is empty or "-".
 void writeOutput(const std::string& path, const std::string& text);
 
 // The distance map pictures, for each path that is not empty.

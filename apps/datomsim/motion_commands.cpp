@@ -32,7 +32,8 @@ void addReach(CLI::App& app) {
   command->add_option("--start", args->start,
                       "Also follow the gradient from this cell and draw the path");
   args->rules.addTo(*command);
-  command->add_option("--out", args->out, "Write the JSON here instead of standard output");
+  command->add_option("--out", args->out,
+                      "Write the JSON to this file (without it, or with \"-\": standard output)");
   command->add_option("--png", args->png, "Write the distance map as a PNG picture");
   command->add_option("--svg", args->svg, "Write the distance map as an SVG picture");
   command->callback([args] {
@@ -71,7 +72,8 @@ void addMoves(CLI::App& app) {
   command->add_option("--at", args->at, "The mobile's cell x,y,z; a module there is the mobile")
       ->required();
   args->rules.addTo(*command);
-  command->add_option("--out", args->out, "Write the JSON here instead of standard output");
+  command->add_option("--out", args->out,
+                      "Write the JSON to this file (without it, or with \"-\": standard output)");
   command->callback([args] {
     const geometry::Cell at = parseCell("--at", args->at);
     const io::Scene scene = unwrap(io::readScene(args->scene));

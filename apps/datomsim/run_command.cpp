@@ -60,7 +60,9 @@ void addRunCommand(CLI::App& app) {
                    "Extra random message delay, uniform in [0, jitter], in milliseconds")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  command->add_option("--out", args->out, "Write the JSON result here instead of standard output");
+  command->add_option(
+      "--out", args->out,
+      "Write the JSON result to this file (without it, or with \"-\": standard output)");
   command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
   command->callback([args] {
     experiment::RunRequest request;

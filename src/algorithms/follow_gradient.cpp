@@ -26,7 +26,15 @@ void FollowGradientProgram::step(program::ModuleContext& context) {
       candidates_.push_back(std::move(*motion));
     }
   }
-  if (candidates_.empty()) return fail("no valid motion from " + toString(context.cell()));
+  if (candidates_.empty()) {
+    // Say which: nothing to turn about, or every rule refused.
+    if (context.latchedConnectors() == 0) {
+      return fail("at " + toString(context.cell()) +
+                  " it is latched to no module, so it has no pivot to turn about");
+    }
+    return fail("no valid motion from " + toString(context.cell()) +
+                " (datomsim moves --at lists each refusal)");
+  }
   candidateDistances_.assign(candidates_.size(), kUnknown);
   waitingReplies_ = static_cast<int>(candidates_.size());
   phase_ = Phase::kAsking;
@@ -46,7 +54,8 @@ void FollowGradientProgram::choose(program::ModuleContext& context) {
     if (candidateDistances_[i] < candidateDistances_[best]) best = i;
   }
   if (candidateDistances_[best] == kUnknown) {
-    return fail("no pivot knows a distance for the goals around " + toString(context.cell()));
+    return fail("no pivot knows a distance to the goal from the cells around " +
+                toString(context.cell()) + ": the goal is not reachable from there");
   }
   chosen_ = candidates_[best];
   phase_ = Phase::kDeforming;

@@ -8,6 +8,7 @@
 #include "motion/reach.h"
 #include "scene/paper_arch.h"
 #include "scene/random_scene.h"
+#include "support/world_builder.h"
 
 namespace datomsim::algorithms {
 
@@ -132,6 +133,32 @@ TEST(PaperExperiment, TheSameSeedGivesTheSameTraceByteForByte) {
   const FollowRun second = followOnPaperScene(2, 7);
   ASSERT_FALSE(first.result.trace.empty());
   EXPECT_EQ(first.result.trace, second.result.trace);
+}
+
+// A mobile that cannot go anywhere says why, instead of running forever or claiming a path.
+TEST(FollowGradientFailures, AMobileLatchedToNothingSaysSo) {
+  experiment::RunRequest request;
+  request.program = "follow-gradient";
+  request.goal = scene::kPaperGoal;
+  request.start = Cell{0, 0, 6};  // above the scene, touching no module
+  const auto run = experiment::runProgram(paperScene(2), table(), request);
+  ASSERT_FALSE(run.ok());
+  EXPECT_NE(run.error().find("at 0,0,6 it is latched to no module"), std::string::npos) << run.error();
+}
+
+TEST(FollowGradientFailures, AGoalOnAnotherIslandIsNotReachable) {
+  // Two separate two-module islands: the mobile can turn about its own, but no module it can ask
+  // ever hears of the goal's distance.
+  world::World world =
+      testing::WorldBuilder().modules({{0, 0, 0}, {1, 0, 0}, {8, 8, 0}, {9, 8, 0}}).build();
+  experiment::RunRequest request;
+  request.program = "follow-gradient";
+  request.goal = Cell{8, 8, 1};
+  request.start = Cell{0, 0, 1};
+  const auto run = experiment::runProgram(std::move(world), table(), request);
+  ASSERT_FALSE(run.ok());
+  EXPECT_NE(run.error().find("the goal is not reachable from there"), std::string::npos)
+      << run.error();
 }
 
 }  // namespace

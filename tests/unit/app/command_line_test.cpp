@@ -116,6 +116,8 @@ TEST_F(CommandLine, MovesListsEveryRuleWithItsRefusal) {
     }
   }
   EXPECT_GT(valid, 0);
+  // "--out -" is standard output too, as in most tools.
+  EXPECT_EQ(datomsim("moves " + arch(2) + " --at 0,0,2 --out -").output, outcome.output);
 }
 
 TEST_F(CommandLine, RunGradientWritesTheSameDistancesAsReach) {

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "experiment/run.h"
 #include "io/scene_file.h"
+#include "sim/statistics.h"
 
 namespace datomsim::app {
 
@@ -27,13 +28,42 @@ std::string runJson(const std::string& program, const experiment::RunResult& res
   for (const auto& [type, count] : result.statistics.messagesByType) messages[type] = count;
   out["messages"] = std::move(messages);
   out["events"] = result.statistics.events();
+  nlohmann::ordered_json byKind = nlohmann::ordered_json::object();
+  for (int kind = 0; kind < sim::kEventKindCount; ++kind) {
+    byKind[sim::toString(sim::EventKind(kind))] = result.statistics.eventsByKind[size_t(kind)];
+  }
+  out["events_by_kind"] = std::move(byKind);
+  out["deformations"] = result.statistics.deformations;
   out["sim_time_s"] = double(result.statistics.simulatedTime) / program::kSecond;
+  // Wall time stays out of the JSON, which is the same for the same inputs; --stats prints it.
   return out.dump() + "\n";
 }
+
+namespace {
+
+// The run's figures for a person, on standard error so that the JSON output stays clean.
+void printStatistics(const sim::Statistics& statistics) {
+  const double wall = statistics.wallSeconds;
+  fmt::print(stderr, "events      {} in {:.3f} s of wall time ({:.3g} events/s)\n",
+             statistics.events(), wall, wall > 0 ? double(statistics.events()) / wall : 0.0);
+  for (int kind = 0; kind < sim::kEventKindCount; ++kind) {
+    fmt::print(stderr, "  {:<18}{}\n", sim::toString(sim::EventKind(kind)),
+               statistics.eventsByKind[size_t(kind)]);
+  }
+  fmt::print(stderr, "messages    {}\n", statistics.messages());
+  for (const auto& [type, count] : statistics.messagesByType) {
+    fmt::print(stderr, "  {:<18}{}\n", type, count);
+  }
+  fmt::print(stderr, "motions     {}\ndeformations {}\nsimulated   {:.3f} s\n", statistics.motions,
+             statistics.deformations, double(statistics.simulatedTime) / program::kSecond);
+}
+
+}  // namespace
 
 void addRunCommand(CLI::App& app) {
   struct Arguments {
     std::string scene, program, goal, start, out, trace;
+    bool stats = false;
     RuleArguments rules;
     uint64_t seed = 1;
     double delayMs = 10, jitterMs = 0;
@@ -64,6 +94,9 @@ void addRunCommand(CLI::App& app) {
       "--out", args->out,
       "Write the JSON result to this file (without it, or with \"-\": standard output)");
   command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
+  command->add_flag("--stats", args->stats,
+                    "Print the run's statistics (events by kind, messages by type, motions, "
+                    "deformations, simulated and wall time) on standard error");
   command->callback([args] {
     experiment::RunRequest request;
     request.program = args->program;
@@ -81,6 +114,7 @@ void addRunCommand(CLI::App& app) {
         unwrap(experiment::runProgram(std::move(scene.world), table, request));
     if (request.trace) writeOutput(args->trace, result.trace);
     writeOutput(args->out, runJson(args->program, result));
+    if (args->stats) printStatistics(result.statistics);
   });
 }
 

@@ -1,5 +1,7 @@
 #include "algorithms/follow_gradient.h"
 
+#include <fmt/format.h>
+
 #include "geometry/lattice.h"
 
 namespace datomsim::algorithms {
@@ -110,7 +112,7 @@ void FollowGradientProgram::onMessage(program::ModuleContext& context, int ownCo
   auto routed = [&](const auto* typed, std::string_view type) {
     if (!typed) return false;
     if (typed->target == context.cell()) {
-      handleRouted(context, *typed, type);
+      if (router_.firstCopy(*typed)) handleRouted(context, *typed, type);
     } else {
       router_.send(context, *typed, ownConnector);
     }
@@ -162,6 +164,25 @@ void FollowGradientProgram::onDeformationDone(program::ModuleContext& context) {
     router_.send(context, AckDeform{answer});
   }
   pending_.reset();
+}
+
+std::string FollowGradientProgram::describeWait() const {
+  const std::string at = path_.empty() ? "before starting" : "at " + toString(path_.back());
+  switch (phase_) {
+    case Phase::kIdle:
+      return "it was never started";
+    case Phase::kAsking:
+      return fmt::format("{} it waits for {} DistanceReply", at, waitingReplies_);
+    case Phase::kDeforming:
+      return fmt::format("{} it waits for {} AckDeform", at, waitingAcks_);
+    case Phase::kMoving:
+      return fmt::format("{} its motion never ended", at);
+    case Phase::kReleasing:
+      return fmt::format("{} it waits for {} AckRelease", at, waitingAcks_);
+    case Phase::kDone:
+      return fmt::format("{} it stopped", at);
+  }
+  return at;
 }
 
 void FollowGradientProgram::fail(const std::string& why) {

@@ -51,6 +51,8 @@ class FollowGradientProgram : public GradientProgram {
   const std::vector<geometry::Cell>& path() const { return path_; }
   bool arrived() const { return arrived_; }
   const std::optional<std::string>& failure() const { return failure_; }
+  // What the mobile is doing or waiting for, for a run that ends before it arrives.
+  std::string describeWait() const;
 
  private:
   // The mobile's side.

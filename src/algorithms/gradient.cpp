@@ -30,6 +30,8 @@ void GradientProgram::onMessage(program::ModuleContext& context, int ownConnecto
   } else if (const auto* notice = message.as<DistanceNotice>()) {
     if (notice->target != context.cell()) {
       router_.send(context, *notice, ownConnector);
+    } else if (!router_.firstCopy(*notice)) {
+      return;
     } else if (const auto direction = geometry::directionOfOffset(notice->cell - context.cell())) {
       learn(context, *direction, notice->distance);
     }

@@ -2,9 +2,13 @@
 //
 // Deformation requests of Algorithm 1 go from the mobile to modules up to two cells away. Each
 // hop forwards the message through the latched connector whose neighbour is nearest to the
-// target cell, if nearer than itself (greedy geographic routing); where no neighbour is nearer,
-// it floods to all latched neighbours with a hop limit, each module forwarding a given message
-// once. Delivery happens at the module in the target cell.
+// target cell, if nearer than itself (greedy geographic routing). Where no neighbour is nearer
+// (typically: a blocking module has just retracted the connector that faced the mobile), it
+// floods to its latched neighbours, each module forwarding a given message once, within a hop
+// limit and within a ball around the target one cell wider than where greedy stalled: the detour
+// is local, and a flood that roamed the whole ensemble would cost a message per latch.
+// Delivery happens at the module in the target cell; a flood can bring it several copies, of
+// which the target handles the first (Router::firstCopy).
 #pragma once
 
 #include <array>
@@ -22,7 +26,11 @@ struct RoutedMsg {
   uint32_t request = 0;   // the origin's request number
   int8_t axis = -1;       // a world piston axis, for DeformMsg
   int8_t hopsLeft = 0;    // for flooding
-  bool flooding = false;
+  // While flooding, the farthest a copy may be from the target (squaredDistance4); 0: greedy.
+  // 16 bits keep the routed messages with the most payload within a message's capacity.
+  uint16_t floodBound = 0;
+
+  bool flooding() const { return floodBound > 0; }
 };
 
 struct DeformMsg : RoutedMsg {
@@ -45,21 +53,40 @@ class Router {
   // Sends towards routed.target from this module, choosing the next hop.
   template <typename T>
   void send(program::ModuleContext& context, T routed, int arrivedThrough = -1) {
-    forward(context, routed, arrivedThrough, [&](int connector, const RoutedMsg& next) {
-      T copy = routed;
-      static_cast<RoutedMsg&>(copy) = next;
-      return context.send(connector, program::Message::of(copy));
-    });
+    forward(context, routed, kindOf<T>(), arrivedThrough,
+            [&](int connector, const RoutedMsg& next) {
+              T copy = routed;
+              static_cast<RoutedMsg&>(copy) = next;
+              return context.send(connector, program::Message::of(copy));
+            });
+  }
+
+  // At the target: whether this copy is the first to arrive, the one to handle. A flood reaches
+  // the target through each of its latched neighbours in the ball; a greedy message arrives once.
+  template <typename T>
+  bool firstCopy(const T& routed) {
+    return !routed.flooding() || !seen(routed, kindOf<T>());
   }
 
  private:
+  // A number per message type, so that a DeformMsg and an AckDeform with the same cells and
+  // request number are told apart.
+  template <typename T>
+  static constexpr uint64_t kindOf() {
+    uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a
+    for (const char c : T::kName) hash = (hash ^ uint8_t(c)) * 0x100000001b3ULL;
+    return hash;
+  }
+
   template <typename Send>
-  void forward(program::ModuleContext& context, const RoutedMsg& routed, int arrivedThrough,
-               Send&& sendThrough);
+  void forward(program::ModuleContext& context, const RoutedMsg& routed, uint64_t kind,
+               int arrivedThrough, Send&& sendThrough);
 
-  bool seen(const RoutedMsg& routed);
+  // Whether this module met the message before; remembers it if not.
+  bool seen(const RoutedMsg& routed, uint64_t kind);
 
-  // Keys of recently flooded messages (origin, request, target), so that each is forwarded once.
+  // Keys of recently flooded messages (type, origin, request, target), so that each is forwarded
+  // or handled once.
   // Allocated on the first flood: most modules never flood, and a module's idle state stays small.
   struct Recent {
     std::array<uint64_t, 16> keys{};

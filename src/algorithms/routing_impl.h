@@ -1,6 +1,9 @@
 // Template part of routing.h.
 #pragma once
 
+#include <algorithm>
+#include <limits>
+
 #include "geometry/lattice.h"
 
 namespace datomsim::algorithms {
@@ -12,9 +15,17 @@ inline int64_t squaredDistance4(const geometry::Cell& a, const geometry::Cell& b
   return (2 * dx + dz) * (2 * dx + dz) + (2 * dy + dz) * (2 * dy + dz) + 2 * dz * dz;
 }
 
-inline bool Router::seen(const RoutedMsg& routed) {
-  // One 64-bit key per message: origin cell, request number and target cell, mixed.
-  uint64_t key = uint64_t(routed.request) * 0x9e3779b97f4a7c15ULL;
+// The flood's ball: one cell (squaredDistance4 = 4) wider in radius than `stalledAt`.
+inline uint16_t floodBoundAround(int64_t stalledAt) {
+  int64_t radius = 0;  // twice the world distance, rounded up
+  while (radius * radius < stalledAt) ++radius;
+  const int64_t bound = (radius + 2) * (radius + 2);
+  return uint16_t(std::min<int64_t>(bound, std::numeric_limits<uint16_t>::max()));
+}
+
+inline bool Router::seen(const RoutedMsg& routed, uint64_t kind) {
+  // One 64-bit key per message: type, origin cell, request number and target cell, mixed.
+  uint64_t key = (kind ^ uint64_t(routed.request)) * 0x9e3779b97f4a7c15ULL;
   for (const int32_t v : {routed.origin.x, routed.origin.y, routed.origin.z, routed.target.x,
                           routed.target.y, routed.target.z}) {
     key = (key ^ uint32_t(v)) * 0xbf58476d1ce4e5b9ULL;
@@ -31,11 +42,11 @@ inline bool Router::seen(const RoutedMsg& routed) {
 }
 
 template <typename Send>
-void Router::forward(program::ModuleContext& context, const RoutedMsg& routed, int arrivedThrough,
-                     Send&& sendThrough) {
+void Router::forward(program::ModuleContext& context, const RoutedMsg& routed, uint64_t kind,
+                     int arrivedThrough, Send&& sendThrough) {
   const uint16_t latched = context.latchedConnectors();
   const int64_t own = squaredDistance4(context.cell(), routed.target);
-  if (!routed.flooding) {
+  if (!routed.flooding()) {
     // Greedy: the latched neighbour nearest to the target, if nearer than this module.
     int best = -1;
     int64_t bestDistance = own;
@@ -52,18 +63,24 @@ void Router::forward(program::ModuleContext& context, const RoutedMsg& routed, i
       return;
     }
   }
-  // No neighbour is nearer: flood, each module forwarding once, within the hop limit.
+  // No neighbour is nearer: flood, each module forwarding once, within the hop limit and the
+  // ball around the target.
   RoutedMsg next = routed;
-  if (!next.flooding) {
-    next.flooding = true;
+  if (!next.flooding()) {
+    next.floodBound = floodBoundAround(own);
     next.hopsLeft = kFloodHops;
   }
-  if (routed.flooding && seen(routed)) return;
-  if (!routed.flooding) seen(next);
+  if (routed.flooding() && seen(routed, kind)) return;
+  if (!routed.flooding()) seen(next, kind);
   if (next.hopsLeft <= 0) return;
   --next.hopsLeft;
   for (int connector = 0; connector < geometry::kDirectionCount; ++connector) {
-    if (connector == arrivedThrough || !(latched & (1u << connector))) continue;
+    // Back where it came from only when the flood starts here: the greedy sender has not
+    // flooded it, and may be the only way round.
+    if (!(latched & (1u << connector)) || (routed.flooding() && connector == arrivedThrough)) {
+      continue;
+    }
+    if (squaredDistance4(context.cellBehind(connector), routed.target) > next.floodBound) continue;
     sendThrough(connector, next);
   }
 }

@@ -104,11 +104,20 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   result.distances.assign(distances.begin(), distances.end());
 
   if (follow) {
+    // A helper that failed (a refused compression, say) is as much a failed run as a stuck mobile.
+    for (const world::Module& module : simulator.world().modules()) {
+      const auto* helper =
+          dynamic_cast<const algorithms::FollowGradientProgram*>(simulator.program(module.id));
+      if (module.id != *mobile && helper && helper->failure()) {
+        return Error{fmt::format("module {} failed: {}", module.id.value, *helper->failure())};
+      }
+    }
     const auto* program =
         dynamic_cast<const algorithms::FollowGradientProgram*>(simulator.program(*mobile));
     if (program->failure()) return Error{"the mobile stopped: " + *program->failure()};
     if (!program->arrived()) {
-      return Error{"the mobile did not reach the goal " + toString(request.goal)};
+      return Error{fmt::format("the mobile did not reach the goal {}: {}", toString(request.goal),
+                               program->describeWait())};
     }
     result.path = program->path();
   }

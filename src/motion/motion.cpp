@@ -2,6 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <optional>
+#include <tuple>
+#include <utility>
+
 #include "geometry/lattice.h"
 
 namespace datomsim::motion {
@@ -30,6 +35,8 @@ std::string_view toString(RefusalReason reason) {
       return "double deformation not allowed";
     case RefusalReason::kWouldLetGo:
       return "cannot deform without letting go";
+    case RefusalReason::kGroupWouldLetGo:
+      return "deforming modules would let go together";
     case RefusalReason::kMobileNotLatched:
       return "mobile not latched to pivot";
   }
@@ -65,6 +72,12 @@ std::string describe(const Refusal& refusal) {
                  " holds module {}, which cannot compress piston {}: it is latched only "
                  "through connectors that piston moves and would let go",
                  refusal.blocker.value, refusal.axis);
+    case RefusalReason::kGroupWouldLetGo:
+      return head + cell +
+             fmt::format(
+                 " holds module {}, which cannot compress piston {}: it would stay latched only "
+                 "to modules that deform in the same motion, and they would let go together",
+                 refusal.blocker.value, refusal.axis);
     case RefusalReason::kMobileNotLatched:
       return head + "the mobile is not latched to the pivot";
   }
@@ -82,6 +95,66 @@ bool staysAttached(const World& world, const Module& module, int axis,
 }
 
 namespace {
+
+// The modules a rule makes deform, as the attachment check sees them.
+struct DeformingModule {
+  const Module* module;
+  std::array<int, 2> axes;  // the pistons it compresses, -1 when unused
+  const RuleCell* need;
+  Cell cell;
+};
+using DeformingGroup = std::array<DeformingModule, std::tuple_size_v<decltype(Rule::cells)>>;
+
+// Each deforming module holds to the ensemble alone (staysAttached) when it has a kept latch to a
+// module outside the group. Inside a group, a module may instead hold to another deforming module
+// through a latch neither of them moves, if that one holds: two blocking modules clinging only to
+// each other would fall away together. Returns the index of the first module that holds to
+// nothing and the piston at fault, or nullopt when the whole group holds.
+std::optional<std::pair<int, int>> groupLetsGo(const World& world, const DeformingGroup& group,
+                                               int size, std::optional<ModuleId> mobile) {
+  auto indexOf = [&](const Module* module) {
+    for (int i = 0; i < size; ++i) {
+      if (group[i].module == module) return i;
+    }
+    return -1;
+  };
+  auto movedByAny = [](const DeformingModule& d, int direction) {
+    for (const int axis : d.axes) {
+      if (axis >= 0 && geometry::axisMovesDirection(axis, direction)) return true;
+    }
+    return false;
+  };
+  // holds[i][k]: module i holds while compressing its k-th piston. A fixpoint over a few modules.
+  std::array<std::array<bool, 2>, std::tuple_size_v<DeformingGroup>> holds{};
+  auto holdsFully = [&](int i) {
+    return (group[i].axes[0] < 0 || holds[i][0]) && (group[i].axes[1] < 0 || holds[i][1]);
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int i = 0; i < size; ++i) {
+      for (int k = 0; k < 2; ++k) {
+        const int axis = group[i].axes[k];
+        if (axis < 0 || holds[i][k]) continue;
+        const Module& module = *group[i].module;
+        for (int d = 0; d < geometry::kDirectionCount && !holds[i][k]; ++d) {
+          if (geometry::axisMovesDirection(axis, d) || !world.isLatched(module, d)) continue;
+          const Module* other = world.neighbour(module, d);
+          if (!other || (mobile && other->id == *mobile)) continue;
+          const int j = indexOf(other);
+          holds[i][k] =
+              j < 0 || (holdsFully(j) && !movedByAny(group[j], geometry::oppositeDirection(d)));
+        }
+        changed = changed || holds[i][k];
+      }
+    }
+  }
+  for (int i = 0; i < size; ++i) {
+    for (int k = 0; k < 2; ++k) {
+      if (group[i].axes[k] >= 0 && !holds[i][k]) return std::pair{i, group[i].axes[k]};
+    }
+  }
+  return std::nullopt;
+}
 
 // Checks one rule. Fills `refusal` when it fails and, if `deformations` is given, the list of
 // modules that must deform when it holds. Written for the hot loop of reachability: no
@@ -101,6 +174,8 @@ bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mo
     return false;
   };
 
+  DeformingGroup group;
+  int groupSize = 0;
   for (int i = 0; i < rule.cellCount; ++i) {
     const RuleCell& need = rule.cells[i];
     const Cell cell = pivotCell + need.offset;
@@ -126,8 +201,20 @@ bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mo
         }
       }
     }
-    if (deformations) {
-      deformations->push_back({cell, module->id, need.firstAxis, need.secondAxis, need.role});
+    group[groupSize++] = {module, {need.firstAxis, need.secondAxis}, &need, cell};
+  }
+  // One module alone was judged above; a group can still let go as a whole.
+  if (options.attachment && groupSize >= 2) {
+    if (const auto lets = groupLetsGo(world, group, groupSize, mobile.module)) {
+      const DeformingModule& d = group[lets->first];
+      return refuse(d.need->role, d.cell, RefusalReason::kGroupWouldLetGo, d.module, lets->second);
+    }
+  }
+  if (deformations) {
+    for (int i = 0; i < groupSize; ++i) {
+      const DeformingModule& d = group[i];
+      deformations->push_back(
+          {d.cell, d.module->id, d.need->firstAxis, d.need->secondAxis, d.need->role});
     }
   }
   return true;

@@ -57,6 +57,8 @@ enum class RefusalReason : uint8_t {
   kCellOutsideWorld,   // a cell the rule needs is solid (ground or grid bounds)
   kDoubleDeformation,  // strict rules: a def(X, Y) cell must be empty
   kWouldLetGo,         // attachment check: the module would hold only through moving connectors
+  kGroupWouldLetGo,    // attachment check: it would hold only to modules deforming with it, which
+                       // hold to nothing else
   kMobileNotLatched,   // the mobile is in the world but not latched to the pivot
 };
 

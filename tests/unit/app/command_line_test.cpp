@@ -130,6 +130,27 @@ TEST_F(CommandLine, RunGradientWritesTheSameDistancesAsReach) {
             nlohmann::json::parse(readText(path("reach.json")))["distances"]);
 }
 
+TEST_F(CommandLine, RunFollowGradientReportsItsStatistics) {
+  const Outcome run =
+      datomsim("run " + arch(2) + " --program follow-gradient --goal 6,5,2 --start 0,0,2 --out " +
+               path("run.json") + " --stats");
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto json = nlohmann::json::parse(readText(path("run.json")));
+  EXPECT_EQ(json["path"].size(), 8u);  // the start's distance is 7
+  EXPECT_EQ(json["motions"], 7);
+  uint64_t sum = 0;
+  for (const auto& [kind, count] : json["events_by_kind"].items()) sum += count.get<uint64_t>();
+  EXPECT_EQ(sum, json["events"].get<uint64_t>());
+  EXPECT_EQ(json["events_by_kind"]["motion-end"], 7);
+  // Each motion's blocking modules compress and release: deformations come in pairs.
+  EXPECT_GT(json["deformations"].get<int>(), 0);
+  EXPECT_EQ(json["deformations"].get<int>() % 2, 0);
+  // --stats speaks on standard error, with the wall time the JSON leaves out.
+  EXPECT_NE(run.output.find("of wall time"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("motion-middle"), std::string::npos) << run.output;
+  EXPECT_EQ(json.find("wall_s"), json.end());
+}
+
 TEST_F(CommandLine, BadInputLeavesNoOutputFile) {
   const std::string out = path("out.json");
   const std::string bad = path("bad.xml");

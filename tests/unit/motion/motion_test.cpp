@@ -120,6 +120,53 @@ TEST(Motion, AttachmentRefusesAModuleHeldOnlyThroughConnectorsItsPistonMoves) {
   EXPECT_NE(describe(refusal).find("would let go"), std::string::npos);
 }
 
+// The motion of a mobile at 1,4,1 about the pivot at 2,4,1 to 2,5,1 makes three modules deform:
+// 2,5,0 (piston 4), 1,4,2 and 1,5,2 (piston 5). Or its refusal.
+Evaluation aheadAbout241(const world::World& world, const RuleOptions& options) {
+  const Mobile mobile{Cell{1, 4, 1}, std::nullopt};
+  for (Evaluation& evaluation : evaluateAll(world, table(), mobile, options)) {
+    const Rule* rule = std::holds_alternative<Motion>(evaluation)
+                           ? std::get<Motion>(evaluation).rule
+                           : std::get<Refusal>(evaluation).rule;
+    const Cell pivot = mobile.cell - rule->mobileOffset;
+    if (pivot == Cell{2, 4, 1} && pivot + rule->goalOffset == Cell{2, 5, 1}) return evaluation;
+  }
+  ADD_FAILURE() << "no rule from 1,4,1 about 2,4,1 to 2,5,1";
+  return Refusal{};
+}
+
+TEST(Motion, AttachmentRefusesBlockingModulesThatHoldOnlyToEachOther) {
+  // 1,4,2 and 1,5,2 each keep a latch their piston does not move, but only to each other: both
+  // compress, and the pair would hang from nothing. 2,5,0 holds to 3,5,0.
+  const world::World pair =
+      WorldBuilder().modules({{2, 4, 1}, {1, 4, 2}, {1, 5, 2}, {2, 5, 0}, {3, 5, 0}}).build();
+  const Evaluation refused = aheadAbout241(pair, {});
+  ASSERT_TRUE(std::holds_alternative<Refusal>(refused));
+  const Refusal& refusal = std::get<Refusal>(refused);
+  EXPECT_EQ(refusal.reason, RefusalReason::kGroupWouldLetGo);
+  EXPECT_EQ(refusal.cell, (Cell{1, 4, 2}));
+  EXPECT_EQ(refusal.axis, 5);
+  EXPECT_NE(describe(refusal).find("let go together"), std::string::npos) << describe(refusal);
+
+  // Each one alone passes the single-module check: only the group lets go.
+  for (const Cell cell : {Cell{1, 4, 2}, Cell{1, 5, 2}}) {
+    EXPECT_TRUE(staysAttached(pair, *pair.moduleAt(cell), 5, std::nullopt));
+  }
+  // Without the check the motion is valid, with its three deformations.
+  RuleOptions off;
+  off.attachment = false;
+  const Evaluation loose = aheadAbout241(pair, off);
+  ASSERT_TRUE(std::holds_alternative<Motion>(loose));
+  EXPECT_EQ(std::get<Motion>(loose).deformations.size(), 3u);
+
+  // A module at 0,5,2 gives the pair a hold that stays: the motion becomes valid.
+  const world::World anchored =
+      WorldBuilder()
+          .modules({{2, 4, 1}, {1, 4, 2}, {1, 5, 2}, {2, 5, 0}, {3, 5, 0}, {0, 5, 2}})
+          .build();
+  EXPECT_TRUE(std::holds_alternative<Motion>(aheadAbout241(anchored, {})));
+}
+
 TEST(Motion, AttachmentAcceptsAModuleHeldByAConnectorItsPistonDoesNotMove) {
   const Rule& rule = ruleWith(Turn::kAhead);
   const Cell blocking = cellOf(rule, CellRole::kC);

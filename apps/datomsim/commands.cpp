@@ -24,6 +24,11 @@ void writeOutput(const std::string& path, const std::string& text) {
   }));
 }
 
+void addOutputOption(CLI::App& command, std::string& out) {
+  command.add_option("--out", out,
+                     "Write the JSON to this file (without it, or with \"-\": standard output)");
+}
+
 void writePictures(const world::World& world, const motion::DistanceMap& map,
                    const std::vector<geometry::Cell>& path, const std::string& title,
                    const std::string& png, const std::string& svg) {

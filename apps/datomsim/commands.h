@@ -45,6 +45,9 @@ std::string runJson(const std::string& program, const experiment::RunResult& res
 // Writes text to a file atomically, or to standard output when the path is empty or "-".
 void writeOutput(const std::string& path, const std::string& text);
 
+// The --out option whose value writeOutput takes.
+void addOutputOption(CLI::App& command, std::string& out);
+
 // The distance map pictures, for each path that is not empty.
 void writePictures(const world::World& world, const motion::DistanceMap& map,
                    const std::vector<geometry::Cell>& path, const std::string& title,

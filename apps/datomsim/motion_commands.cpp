@@ -32,8 +32,7 @@ void addReach(CLI::App& app) {
   command->add_option("--start", args->start,
                       "Also follow the gradient from this cell and draw the path");
   args->rules.addTo(*command);
-  command->add_option("--out", args->out,
-                      "Write the JSON to this file (without it, or with \"-\": standard output)");
+  addOutputOption(*command, args->out);
   command->add_option("--png", args->png, "Write the distance map as a PNG picture");
   command->add_option("--svg", args->svg, "Write the distance map as an SVG picture");
   command->callback([args] {
@@ -72,8 +71,7 @@ void addMoves(CLI::App& app) {
   command->add_option("--at", args->at, "The mobile's cell x,y,z; a module there is the mobile")
       ->required();
   args->rules.addTo(*command);
-  command->add_option("--out", args->out,
-                      "Write the JSON to this file (without it, or with \"-\": standard output)");
+  addOutputOption(*command, args->out);
   command->callback([args] {
     const geometry::Cell at = parseCell("--at", args->at);
     const io::Scene scene = unwrap(io::readScene(args->scene));

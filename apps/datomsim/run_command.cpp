@@ -90,9 +90,7 @@ void addRunCommand(CLI::App& app) {
                    "Extra random message delay, uniform in [0, jitter], in milliseconds")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  command->add_option(
-      "--out", args->out,
-      "Write the JSON result to this file (without it, or with \"-\": standard output)");
+  addOutputOption(*command, args->out);
   command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
   command->add_flag("--stats", args->stats,
                     "Print the run's statistics (events by kind, messages by type, motions, "

@@ -73,24 +73,27 @@ std::string attributeObject(const AttributeList& list) {
   return out + "}";
 }
 
+// "[a,b,c]"
+void appendTriple(std::string& out, int64_t a, int64_t b, int64_t c) {
+  out += '[';
+  appendInteger(out, a);
+  out += ',';
+  appendInteger(out, b);
+  out += ',';
+  appendInteger(out, c);
+  out += ']';
+}
+
 void appendModule(std::string& out, const world::Module& module) {
   out += "    {\"id\":";
   appendInteger(out, module.id.value);
-  out += ",\"cell\":[";
-  appendInteger(out, module.cell.x);
-  out += ',';
-  appendInteger(out, module.cell.y);
-  out += ',';
-  appendInteger(out, module.cell.z);
-  out += "],\"orientation\":";
+  out += ",\"cell\":";
+  appendTriple(out, module.cell.x, module.cell.y, module.cell.z);
+  out += ",\"orientation\":";
   appendInteger(out, module.orientation.code());
-  out += ",\"color\":[";
-  appendInteger(out, module.color.r);
-  out += ',';
-  appendInteger(out, module.color.g);
-  out += ',';
-  appendInteger(out, module.color.b);
-  out += "]}";
+  out += ",\"color\":";
+  appendTriple(out, module.color.r, module.color.g, module.color.b);
+  out += "}";
 }
 
 // Fixed key order and layout: the header is small and readable, then one module per line.

@@ -67,17 +67,15 @@ std::string describe(const Refusal& refusal) {
                  "require that cell to be empty",
                  refusal.blocker.value);
     case RefusalReason::kWouldLetGo:
-      return head + cell +
-             fmt::format(
-                 " holds module {}, which cannot compress piston {}: it is latched only "
-                 "through connectors that piston moves and would let go",
-                 refusal.blocker.value, refusal.axis);
     case RefusalReason::kGroupWouldLetGo:
       return head + cell +
-             fmt::format(
-                 " holds module {}, which cannot compress piston {}: it would stay latched only "
-                 "to modules that deform in the same motion, and they would let go together",
-                 refusal.blocker.value, refusal.axis);
+             fmt::format(" holds module {}, which cannot compress piston {}: {}",
+                         refusal.blocker.value, refusal.axis,
+                         refusal.reason == RefusalReason::kWouldLetGo
+                             ? "it is latched only through connectors that piston moves and "
+                               "would let go"
+                             : "it would stay latched only to modules that deform in the same "
+                               "motion, and they would let go together");
     case RefusalReason::kMobileNotLatched:
       return head + "the mobile is not latched to the pivot";
   }

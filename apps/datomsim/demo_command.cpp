@@ -64,7 +64,8 @@ void addDemoCommand(CLI::App& app) {
                     (folder / (name + "-distances.png")).string(),
                     (folder / (name + "-distances.svg")).string());
       writeOutput((folder / (name + "-trace.jsonl")).string(), result.run.trace);
-      writeOutput((folder / (name + "-run.json")).string(), runJson("follow-gradient", result.run));
+      writeOutput((folder / (name + "-run.json")).string(),
+                  runJson(std::string(algorithms::kFollowGradient), result.run));
       if (bundle.ok()) {
         check(exporting::writeViewerPage(
             folder / (name + "-viewer.html"), *bundle,

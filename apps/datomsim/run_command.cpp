@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "algorithms/registry.h"
 #include "commands.h"
 #include "experiment/run.h"
 #include "io/scene_file.h"
@@ -13,7 +14,7 @@ namespace datomsim::app {
 
 std::string runJson(const std::string& program, const experiment::RunResult& result) {
   nlohmann::ordered_json out;
-  if (program == "gradient") {
+  if (!algorithms::programInfo(program)->mobileWalks) {
     // Exactly as `reach` writes its distances.
     nlohmann::ordered_json distances = nlohmann::ordered_json::array();
     for (const auto& [cell, d] : result.distances) distances.push_back({cell.x, cell.y, cell.z, d});
@@ -72,9 +73,15 @@ void addRunCommand(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("run", "Run a module program on a scene in the discrete-event simulator");
   command->add_option("scene", args->scene, "Scene file (.xml or .json)")->required();
-  command->add_option("--program", args->program, "gradient or follow-gradient")
+  std::vector<std::string> names;
+  std::string summaries;
+  for (const algorithms::ProgramInfo& info : algorithms::programs()) {
+    names.emplace_back(info.name);
+    summaries += fmt::format("{}{}: {}", summaries.empty() ? "" : "; ", info.name, info.summary);
+  }
+  command->add_option("--program", args->program, summaries)
       ->required()
-      ->check(CLI::IsMember({"gradient", "follow-gradient"}));
+      ->check(CLI::IsMember(names));
   command->add_option("--goal", args->goal, "Goal cell x,y,z")->required();
   command->add_option("--start", args->start,
                       "The mobile's start x,y,z: the module there, else the one at the goal moved "

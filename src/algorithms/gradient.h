@@ -40,7 +40,7 @@ struct DistanceNotice : RoutedMsg {
 struct GradientParameters {
   geometry::Cell goal;
   // The mobile: it is not part of the fixed world and takes no part in the gradient.
-  world::ModuleId mobile;
+  ModuleId mobile;
 };
 
 class GradientProgram : public program::ModuleProgram {

@@ -1,25 +1,115 @@
 #include "algorithms/registry.h"
 
+#include <algorithm>
+#include <array>
+#include <map>
+
 #include "algorithms/follow_gradient.h"
 
 namespace datomsim::algorithms {
 
-std::vector<std::string> programNames() {
-  return {"gradient", "follow-gradient"};
+namespace {
+
+// The programs of one kind, each kept with its module.
+template <typename Program>
+class TypedPrograms final : public ProgramSet {
+ public:
+  explicit TypedPrograms(const GradientParameters& parameters) : parameters_(parameters) {}
+
+  std::unique_ptr<program::ModuleProgram> make(ModuleId id) override {
+    auto program = std::make_unique<Program>(parameters_);
+    made_.push_back({id, program.get()});
+    return program;
+  }
+
+  std::vector<std::pair<geometry::Cell, int>> distances(
+      const std::function<geometry::Cell(ModuleId)>& cellOf) const override {
+    std::map<geometry::Cell, int> smallest;
+    for (const auto& [id, program] : made_) {
+      if (id == parameters_.mobile) continue;
+      for (const auto& [cell, distance] : program->knownDistances(cellOf(id))) {
+        auto [it, inserted] = smallest.emplace(cell, distance);
+        if (!inserted) it->second = std::min(it->second, int(distance));
+      }
+    }
+    return {smallest.begin(), smallest.end()};
+  }
+
+  std::optional<MobileOutcome> mobile() const override {
+    if constexpr (std::is_same_v<Program, FollowGradientProgram>) {
+      MobileOutcome outcome;
+      for (const auto& [id, program] : made_) {
+        if (id == parameters_.mobile) {
+          outcome.path = program->path();
+          outcome.arrived = program->arrived();
+          outcome.failure = program->failure();
+          outcome.wait = program->describeWait();
+        } else if (program->failure() && !outcome.helperFailure) {
+          outcome.helperFailure = {id, *program->failure()};
+        }
+      }
+      return outcome;
+    } else {
+      return std::nullopt;
+    }
+  }
+
+ private:
+  GradientParameters parameters_;
+  std::vector<std::pair<ModuleId, const Program*>> made_;  // in the order made: increasing id
+};
+
+template <typename Program>
+std::unique_ptr<ProgramSet> make(const GradientParameters& parameters) {
+  return std::make_unique<TypedPrograms<Program>>(parameters);
 }
 
-Result<program::ProgramFactory> programFactory(const std::string& name,
-                                               const GradientParameters& parameters) {
-  if (name == "gradient") {
-    return program::ProgramFactory(
-        [parameters](world::ModuleId) { return std::make_unique<GradientProgram>(parameters); });
+struct Entry {
+  ProgramInfo info;
+  std::unique_ptr<ProgramSet> (*make)(const GradientParameters&);
+};
+
+const std::array kEntries = {
+    Entry{{kGradient, "the distributed gradient: every cell's distance to the goal", false},
+          make<GradientProgram>},
+    Entry{{kFollowGradient, "the gradient, then the mobile follows it from the start (Algorithm 1)",
+           true},
+          make<FollowGradientProgram>},
+};
+
+const std::array<ProgramInfo, kEntries.size()> kPrograms = [] {
+  std::array<ProgramInfo, kEntries.size()> infos;
+  for (size_t i = 0; i < kEntries.size(); ++i) infos[i] = kEntries[i].info;
+  return infos;
+}();
+
+std::string knownNames() {
+  std::string names;
+  for (const ProgramInfo& info : kPrograms) {
+    names += (names.empty() ? "" : ", ") + std::string(info.name);
   }
-  if (name == "follow-gradient") {
-    return program::ProgramFactory([parameters](world::ModuleId) {
-      return std::make_unique<FollowGradientProgram>(parameters);
-    });
+  return names;
+}
+
+}  // namespace
+
+std::span<const ProgramInfo> programs() {
+  return kPrograms;
+}
+
+Result<ProgramInfo> programInfo(std::string_view name) {
+  for (const ProgramInfo& info : kPrograms) {
+    if (info.name == name) return info;
   }
-  return Error{"unknown program \"" + name + "\"; known programs: gradient, follow-gradient"};
+  return Error{"unknown program \"" + std::string(name) + "\"; known programs: " + knownNames()};
+}
+
+Result<std::unique_ptr<ProgramSet>> makePrograms(std::string_view name,
+                                                 const GradientParameters& parameters) {
+  for (const Entry& entry : kEntries) {
+    if (entry.info.name == name) return entry.make(parameters);
+  }
+  return Error{programInfo(name).error()};
 }
 
 }  // namespace datomsim::algorithms

@@ -1,20 +1,72 @@
-// The module programs by name, as the command line offers them.
+// The module programs by name: the one place their names are spelled, what a run of each needs,
+// and how the driver reads their results after the run through the programs' own types.
 #pragma once
 
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "algorithms/gradient.h"
 #include "common/result.h"
+#include "geometry/cell.h"
 #include "program/module_program.h"
 
 namespace datomsim::algorithms {
 
-// "gradient" and "follow-gradient".
-std::vector<std::string> programNames();
+// The names, spelled here only.
+inline constexpr std::string_view kGradient = "gradient";
+inline constexpr std::string_view kFollowGradient = "follow-gradient";
 
-// The factory of a named program; refuses an unknown name, listing the known ones.
-Result<program::ProgramFactory> programFactory(const std::string& name,
-                                               const GradientParameters& parameters);
+struct ProgramInfo {
+  std::string_view name;
+  std::string_view summary;  // one line, for --help
+  // The mobile walks from a start cell: the driver needs --start, and triggers the mobile once
+  // the gradient has settled.
+  bool mobileWalks = false;
+};
+
+// gradient, then follow-gradient.
+std::span<const ProgramInfo> programs();
+// The entry of a name, or an error listing the known names.
+Result<ProgramInfo> programInfo(std::string_view name);
+
+// How a walking mobile's run ended.
+struct MobileOutcome {
+  std::vector<geometry::Cell> path;  // start first
+  bool arrived = false;
+  std::optional<std::string> failure;  // why the mobile stopped
+  std::string wait;                    // what it waited for when the run ended
+  // A helper module's failure (a refused compression, say): as much a failed run.
+  std::optional<std::pair<ModuleId, std::string>> helperFailure;
+};
+
+// The programs of one run: makes each module's program and keeps a typed handle on it, so that
+// the driver can read the results after the run. The handles point into the programs the
+// simulator owns: read them while the simulator lives.
+class ProgramSet {
+ public:
+  virtual ~ProgramSet() = default;
+
+  // What Simulator::install calls, once per module.
+  virtual std::unique_ptr<program::ModuleProgram> make(ModuleId id) = 0;
+  program::ProgramFactory factory() {
+    return [this](ModuleId id) { return make(id); };
+  }
+
+  // Every cell a module stores a distance for, with the smallest one stored (they agree),
+  // sorted. `cellOf` gives a module's cell at the end of the run.
+  virtual std::vector<std::pair<geometry::Cell, int>> distances(
+      const std::function<geometry::Cell(ModuleId)>& cellOf) const = 0;
+  // The mobile's walk, for programs where it walks.
+  virtual std::optional<MobileOutcome> mobile() const = 0;
+};
+
+Result<std::unique_ptr<ProgramSet>> makePrograms(std::string_view name,
+                                                 const GradientParameters& parameters);
 
 }  // namespace datomsim::algorithms

@@ -2,10 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <map>
-
 #include "algorithms/follow_gradient.h"
 #include "algorithms/registry.h"
+#include "record/trace_writer.h"
 
 namespace datomsim::experiment {
 
@@ -54,8 +53,11 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   if (request.start && !world.isInside(*request.start)) {
     return Error{"start " + toString(*request.start) + " is outside the world"};
   }
-  const bool follow = request.program == "follow-gradient";
-  if (follow && !request.start) return Error{"follow-gradient needs a start cell (--start)"};
+  const auto info = algorithms::programInfo(request.program);
+  if (!info.ok()) return Error{info.error()};
+  if (info->mobileWalks && !request.start) {
+    return Error{std::string(info->name) + " needs a start cell (--start)"};
+  }
 
   auto mobile = placeMobile(world, request);
   if (!mobile.ok()) return Error{mobile.error()};
@@ -65,22 +67,21 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   }
   world.latchAllNeighbours();
 
-  const algorithms::GradientParameters parameters{request.goal, *mobile};
-  auto factory = algorithms::programFactory(request.program, parameters);
-  if (!factory.ok()) return Error{factory.error()};
+  auto programs = algorithms::makePrograms(request.program, {request.goal, *mobile});
+  if (!programs.ok()) return Error{programs.error()};
 
   sim::SimulationOptions options = request.simulation;
   options.mobile = *mobile;
-  sim::TraceRecorder recorder;
-  if (request.trace) recorder.header(world, request.description);
+  record::TraceWriter trace;
+  if (request.trace) trace.header(world, request.description);
   sim::Simulator simulator(std::move(world), table, options);
-  if (request.trace) simulator.record(&recorder);
-  simulator.install(*factory);
+  if (request.trace) simulator.subscribe(&trace);
+  simulator.install((*programs)->factory());
 
-  // The gradient settles first; then, for follow-gradient, the mobile moves.
+  // The gradient settles first; then, where the mobile walks, it is triggered.
   simulator.startAll();
   Status status = simulator.run();
-  if (status.ok() && follow) {
+  if (status.ok() && info->mobileWalks) {
     simulator.trigger(*mobile, algorithms::FollowGradientProgram::kFollowTrigger);
     status = simulator.run();
   }
@@ -89,41 +90,24 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   RunResult result;
   result.mobile = *mobile;
   result.statistics = simulator.statistics();
+  const world::World& ended = simulator.world();
+  result.distances = (*programs)->distances([&](ModuleId id) { return ended.find(id)->cell; });
 
-  // The distances the modules store, gathered cell by cell (the smallest wins; they agree).
-  std::map<Cell, int> distances;
-  for (const world::Module& module : simulator.world().modules()) {
-    const auto* program =
-        dynamic_cast<const algorithms::GradientProgram*>(simulator.program(module.id));
-    if (!program || module.id == *mobile) continue;
-    for (const auto& [cell, distance] : program->knownDistances(module.cell)) {
-      auto [it, inserted] = distances.emplace(cell, distance);
-      if (!inserted) it->second = std::min(it->second, distance);
+  if (const auto walk = (*programs)->mobile()) {
+    if (walk->helperFailure) {
+      return Error{fmt::format("module {} failed: {}", walk->helperFailure->first.value,
+                               walk->helperFailure->second)};
     }
-  }
-  result.distances.assign(distances.begin(), distances.end());
-
-  if (follow) {
-    // A helper that failed (a refused compression, say) is as much a failed run as a stuck mobile.
-    for (const world::Module& module : simulator.world().modules()) {
-      const auto* helper =
-          dynamic_cast<const algorithms::FollowGradientProgram*>(simulator.program(module.id));
-      if (module.id != *mobile && helper && helper->failure()) {
-        return Error{fmt::format("module {} failed: {}", module.id.value, *helper->failure())};
-      }
-    }
-    const auto* program =
-        dynamic_cast<const algorithms::FollowGradientProgram*>(simulator.program(*mobile));
-    if (program->failure()) return Error{"the mobile stopped: " + *program->failure()};
-    if (!program->arrived()) {
+    if (walk->failure) return Error{"the mobile stopped: " + *walk->failure};
+    if (!walk->arrived) {
       return Error{fmt::format("the mobile did not reach the goal {}: {}", toString(request.goal),
-                               program->describeWait())};
+                               walk->wait)};
     }
-    result.path = program->path();
+    result.path = walk->path;
   }
   if (request.trace) {
-    recorder.footer(simulator.now(), summaryJson(result.statistics));
-    result.trace = recorder.text();
+    trace.footer(simulator.now(), summaryJson(result.statistics));
+    result.trace = trace.text();
   }
   return result;
 }

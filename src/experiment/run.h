@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/registry.h"
 #include "common/result.h"
 #include "geometry/cell.h"
 #include "motion/motion.h"
@@ -21,7 +22,7 @@
 namespace datomsim::experiment {
 
 struct RunRequest {
-  std::string program = "gradient";
+  std::string program{algorithms::kGradient};
   geometry::Cell goal;
   std::optional<geometry::Cell> start;
   sim::SimulationOptions simulation;

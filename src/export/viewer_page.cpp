@@ -12,7 +12,7 @@
 
 #include "common/atomic_file.h"
 #include "io/scene_file.h"
-#include "sim/trace.h"
+#include "record/trace_writer.h"
 
 namespace datomsim::exporting {
 namespace {
@@ -222,9 +222,9 @@ Result<std::string> checkTrace(const std::string& text, const std::string& name)
 }
 
 std::string sceneTrace(const world::World& world, const std::string& description) {
-  sim::TraceRecorder recorder;
-  recorder.header(world, description);
-  return recorder.text();
+  record::TraceWriter trace;
+  trace.header(world, description);
+  return trace.text();
 }
 
 Result<std::string> checkOverlay(const std::string& text, const std::string& name) {

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "geometry/lattice.h"
 #include "geometry/vec3.h"
 
 namespace datomsim::geometry {
@@ -25,22 +26,22 @@ class Orientation {
   static std::optional<Orientation> fromCode(int code);
 
   // The rotation by +90 degrees (right-hand rule) about world axis `axis`.
-  static Orientation quarterTurn(int axis);
+  static constexpr Orientation quarterTurn(int axis);
 
-  int code() const { return code_; }
+  constexpr int code() const { return code_; }
 
   // World axis of the module's own piston p, and the own piston pushing world axis a.
-  int worldAxis(int ownPiston) const;
-  int ownPiston(int worldAxis) const;
+  constexpr int worldAxis(int ownPiston) const;
+  constexpr int ownPiston(int worldAxis) const;
 
   // World direction faced by the module's own connector i, and the own connector facing d.
-  int worldDirection(int ownConnector) const;
-  int ownConnector(int worldDirection) const;
+  constexpr int worldDirection(int ownConnector) const;
+  constexpr int ownConnector(int worldDirection) const;
 
   // This rotation followed by `after` (world = after(this(own))).
-  Orientation then(Orientation after) const;
+  constexpr Orientation then(Orientation after) const;
 
-  Orientation inverse() const;
+  constexpr Orientation inverse() const;
 
   // Rotates a vector given in the module frame into the world frame.
   Vec3 apply(const Vec3& v) const;
@@ -52,5 +53,109 @@ class Orientation {
 
   uint8_t code_ = 0;
 };
+
+namespace detail {
+
+using AxisMap = std::array<int, kAxisCount>;
+
+// Everything about the group, derived at compile time from the axis geometry in lattice.h.
+struct OrientationTables {
+  std::array<AxisMap, Orientation::kCount> worldAxis{};
+  std::array<AxisMap, Orientation::kCount> ownPiston{};
+  std::array<std::array<int, kDirectionCount>, Orientation::kCount> worldDirection{};
+  std::array<std::array<int, kDirectionCount>, Orientation::kCount> ownConnector{};
+  std::array<std::array<int, Orientation::kCount>, Orientation::kCount> then{};
+  std::array<int, Orientation::kCount> inverse{};
+  std::array<int, kAxisCount> quarterTurn{};
+
+  constexpr OrientationTables() {
+    // A rotation of the cube is fixed by where it sends axes 0 (+a) and 4 (+c); the third basis
+    // axis follows from the right-hand rule (b = c x a).
+    for (int imageA = 0; imageA < kAxisCount; ++imageA) {
+      for (int imageC = 0; imageC < kAxisCount; ++imageC) {
+        const auto imageB = crossAxes(imageC, imageA);
+        if (!imageB) continue;
+        AxisMap map{};
+        map[0] = imageA;
+        map[2] = oppositeAxis(imageA);
+        map[1] = *imageB;
+        map[3] = oppositeAxis(*imageB);
+        map[4] = imageC;
+        map[5] = oppositeAxis(imageC);
+        worldAxis[codeOf(map)] = map;
+      }
+    }
+    for (int o = 0; o < Orientation::kCount; ++o) {
+      for (int p = 0; p < kAxisCount; ++p) ownPiston[o][worldAxis[o][p]] = p;
+      for (int i = 0; i < kDirectionCount; ++i) {
+        const auto& axes = axesOfDirection(i);
+        const int d = *directionOfAxes(worldAxis[o][axes[0]], worldAxis[o][axes[1]]);
+        worldDirection[o][i] = d;
+        ownConnector[o][d] = i;
+      }
+    }
+    for (int first = 0; first < Orientation::kCount; ++first) {
+      for (int second = 0; second < Orientation::kCount; ++second) {
+        AxisMap map{};
+        for (int p = 0; p < kAxisCount; ++p) map[p] = worldAxis[second][worldAxis[first][p]];
+        then[first][second] = codeOf(map);
+        if (then[first][second] == 0) inverse[first] = second;
+      }
+    }
+    // +90 degrees about u: u stays, and every axis v orthogonal to u goes to u x v.
+    for (int u = 0; u < kAxisCount; ++u) {
+      AxisMap map{};
+      for (int v = 0; v < kAxisCount; ++v) {
+        const auto turned = crossAxes(u, v);
+        map[v] = turned ? *turned : v;
+      }
+      quarterTurn[u] = codeOf(map);
+    }
+  }
+
+  // VisibleSim-style code of a rotation given by its axis map (see above).
+  static constexpr int codeOf(const AxisMap& map) {
+    int connectorOnX = -1;
+    for (int i = 0; i < kDirectionCount; ++i) {
+      const auto& axes = axesOfDirection(i);
+      if (*directionOfAxes(map[axes[0]], map[axes[1]]) == 0) connectorOnX = i;
+    }
+    const int up = map[4];
+    const bool pointsUp = up == 4 || up == 0 || up == 1;
+    return connectorOnX + (pointsUp ? 0 : 12);
+  }
+};
+
+inline constexpr OrientationTables kOrientationTables{};
+
+}  // namespace detail
+
+constexpr Orientation Orientation::quarterTurn(int axis) {
+  return Orientation(static_cast<uint8_t>(detail::kOrientationTables.quarterTurn[axis]));
+}
+
+constexpr int Orientation::worldAxis(int ownPiston) const {
+  return detail::kOrientationTables.worldAxis[code_][ownPiston];
+}
+
+constexpr int Orientation::ownPiston(int worldAxis) const {
+  return detail::kOrientationTables.ownPiston[code_][worldAxis];
+}
+
+constexpr int Orientation::worldDirection(int ownConnector) const {
+  return detail::kOrientationTables.worldDirection[code_][ownConnector];
+}
+
+constexpr int Orientation::ownConnector(int worldDirection) const {
+  return detail::kOrientationTables.ownConnector[code_][worldDirection];
+}
+
+constexpr Orientation Orientation::then(Orientation after) const {
+  return Orientation(static_cast<uint8_t>(detail::kOrientationTables.then[code_][after.code_]));
+}
+
+constexpr Orientation Orientation::inverse() const {
+  return Orientation(static_cast<uint8_t>(detail::kOrientationTables.inverse[code_]));
+}
 
 }  // namespace datomsim::geometry

@@ -28,8 +28,7 @@ class Message {
     static_assert(std::is_trivially_copyable_v<T>, "messages are plain data");
     static_assert(sizeof(T) <= kCapacity, "message payload too large");
     Message message;
-    message.type_ = &typeTag<T>;
-    message.name_ = T::kName;
+    message.type_ = &kType<T>;
     std::memcpy(message.bytes_.data(), &payload, sizeof(T));
     return message;
   }
@@ -37,19 +36,22 @@ class Message {
   // The payload if the message is a T, else null.
   template <typename T>
   const T* as() const {
-    if (type_ != &typeTag<T>) return nullptr;
+    if (type_ != &kType<T>) return nullptr;
     return reinterpret_cast<const T*>(bytes_.data());
   }
 
-  std::string_view typeName() const { return name_; }
+  std::string_view typeName() const { return type_ ? type_->name : std::string_view(); }
 
  private:
-  // One distinct address per message type identifies it without RTTI.
+  // One record per message type: its address identifies the type without RTTI, and it holds the
+  // name, so that a message carries one pointer besides its payload.
+  struct Type {
+    std::string_view name;
+  };
   template <typename T>
-  static inline const char typeTag = 0;
+  static inline const Type kType{T::kName};
 
-  const char* type_ = nullptr;
-  std::string_view name_;
+  const Type* type_ = nullptr;
   alignas(8) std::array<unsigned char, kCapacity> bytes_{};
 };
 

@@ -16,13 +16,13 @@
 #include <string>
 #include <vector>
 
+#include "common/module_values.h"
 #include "common/random.h"
 #include "common/result.h"
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
-#include "motion/motion.h"
+#include "motion/motion_values.h"
 #include "program/message.h"
-#include "world/module.h"
 
 namespace datomsim::program {
 
@@ -36,7 +36,7 @@ class ModuleContext {
  public:
   virtual ~ModuleContext() = default;
 
-  virtual world::ModuleId id() const = 0;
+  virtual ModuleId id() const = 0;
   virtual geometry::Cell cell() const = 0;
   virtual geometry::Orientation orientation() const = 0;
   virtual Time now() const = 0;
@@ -82,7 +82,7 @@ class ModuleContext {
   // This module's own random stream, derived from the run's seed and the module id.
   virtual Random& random() = 0;
 
-  virtual void setColor(world::Color color) = 0;
+  virtual void setColor(Color color) = 0;
 };
 
 class ModuleProgram {
@@ -101,6 +101,6 @@ class ModuleProgram {
 };
 
 // Makes the program of one module. Called once per module, in increasing id order.
-using ProgramFactory = std::function<std::unique_ptr<ModuleProgram>(world::ModuleId)>;
+using ProgramFactory = std::function<std::unique_ptr<ModuleProgram>(ModuleId)>;
 
 }  // namespace datomsim::program

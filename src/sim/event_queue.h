@@ -1,7 +1,8 @@
-// The simulator's agenda: events ordered by time, then by the order they were scheduled.
+// The simulator's agenda: events ordered by time, then by the order they were scheduled, and the
+// simulated time of the event being handled.
 //
 // The sequence number makes the order total, so two events at the same time always run in the
-// order they were created, whatever the heap does: runs are reproducible (docs/simulation.md).
+// order they were created: runs are reproducible (docs/simulation.md).
 #pragma once
 
 #include <cstdint>
@@ -33,7 +34,7 @@ struct Event {
   Time time = 0;
   uint64_t sequence = 0;
   EventKind kind = EventKind::kStart;
-  uint32_t module = 0;   // module id
+  uint32_t module = 0;   // the module's index in the world
   int32_t argument = 0;  // connector (message), tag (timer), motion slot (motion events)
   program::Message message;
 };
@@ -44,6 +45,13 @@ struct Event {
 // values, so a push is a lookup among a few buckets and a pop is O(1).
 class EventQueue {
  public:
+  // The time of the event last taken (0 before the first): the simulation's present.
+  Time now() const { return now_; }
+
+  void schedule(Time time, EventKind kind, uint32_t moduleIndex, int32_t argument,
+                const program::Message& message = {}) {
+    push(Event{time, 0, kind, moduleIndex, argument, message});
+  }
   void push(Event event) {
     event.sequence = nextSequence_++;
     buckets_[event.time].push_back(std::move(event));
@@ -58,6 +66,7 @@ class EventQueue {
     first->second.pop_front();
     if (first->second.empty()) buckets_.erase(first);
     --size_;
+    now_ = event.time;
     return event;
   }
 
@@ -65,6 +74,7 @@ class EventQueue {
   std::map<Time, std::deque<Event>> buckets_;
   size_t size_ = 0;
   uint64_t nextSequence_ = 0;
+  Time now_ = 0;
 };
 
 }  // namespace datomsim::sim

@@ -1,45 +1,39 @@
-// One Datom in a world: identity, place, orientation, colour, piston state and latches.
+// One Datom in a world: identity, place, orientation, colour and latches.
 //
-// A Module is plain data owned by a World; other layers refer to modules by ModuleId.
+// A Module is plain data owned by a World, which hands it out read-only: its cell changes only
+// through World::move (so that the occupancy index follows) and its latches only through
+// World::setLatched. Other layers refer to modules by ModuleId. Pistons are not part of a scene:
+// the simulator keeps them (sim/mechanics.h).
 #pragma once
 
-#include <compare>
 #include <cstdint>
 
+#include "common/module_values.h"
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
 
 namespace datomsim::world {
 
-struct ModuleId {
-  uint32_t value = 0;
-  constexpr auto operator<=>(const ModuleId&) const = default;
-};
-
-struct Color {
-  uint8_t r = 128;
-  uint8_t g = 128;
-  uint8_t b = 128;
-  constexpr bool operator==(const Color&) const = default;
-};
-
-// Which of the module's own pistons is compressed, and how far. At most one at a time (paper,
-// section III.B).
-struct PistonState {
-  int8_t piston = -1;  // own piston number 0..5, or -1 when all are at rest
-  float fraction = 0;  // 0 at rest .. 1 fully compressed
-  constexpr bool atRest() const { return piston < 0; }
-  constexpr bool operator==(const PistonState&) const = default;
-};
+using datomsim::Color;
+using datomsim::ModuleId;
 
 struct Module {
   ModuleId id;
   geometry::Cell cell;
   geometry::Orientation orientation;
   Color color;
-  PistonState piston;
   // Bit i set: the module's own connector i is latched to the facing connector of its neighbour.
   uint16_t latches = 0;
+};
+
+// Two latched connectors: module a's own connector ca and module b's own connector cb. Usually
+// they face each other across the lattice; during a motion, the pair of the hinge between pivot
+// and mobile does too once the mobile has arrived, and holds the mobile on its way.
+struct LatchPair {
+  ModuleId a;
+  int connectorA = 0;
+  ModuleId b;
+  int connectorB = 0;
 };
 
 }  // namespace datomsim::world

@@ -75,11 +75,6 @@ const Module* World::find(ModuleId id) const {
   return index == kNotFound ? nullptr : &modules_[index];
 }
 
-Module* World::find(ModuleId id) {
-  const size_t index = slotOf(id);
-  return index == kNotFound ? nullptr : &modules_[index];
-}
-
 Status World::add(const Module& module) {
   const std::string name = "module " + std::to_string(module.id.value);
   if (module.id.value == 0) return Error{"module id 0 is reserved; ids start at 1"};
@@ -149,24 +144,57 @@ void World::latchAllNeighbours() {
   }
 }
 
+Status World::setOrientation(ModuleId id, geometry::Orientation orientation) {
+  const size_t index = slotOf(id);
+  if (index == kNotFound) return Error{"no module " + std::to_string(id.value)};
+  modules_[index].orientation = orientation;
+  return Ok{};
+}
+
+Status World::setColor(ModuleId id, Color color) {
+  const size_t index = slotOf(id);
+  if (index == kNotFound) return Error{"no module " + std::to_string(id.value)};
+  modules_[index].color = color;
+  return Ok{};
+}
+
+std::optional<LatchPair> World::facingPair(const Module& module, int direction) const {
+  const Module* other = neighbour(module, direction);
+  if (!other) return std::nullopt;
+  return LatchPair{module.id, module.orientation.ownConnector(direction), other->id,
+                   other->orientation.ownConnector(geometry::oppositeDirection(direction))};
+}
+
 Status World::setLatched(ModuleId id, int direction, bool latched) {
-  Module* module = find(id);
+  const Module* module = find(id);
   if (!module) return Error{"no module " + std::to_string(id.value)};
-  const Module* other = neighbour(*module, direction);
-  if (!other) {
+  const auto pair = facingPair(*module, direction);
+  if (!pair) {
     return Error{"module " + std::to_string(id.value) + " has no neighbour in direction " +
                  std::to_string(direction)};
   }
-  Module& facing = modules_[slotOf(other->id)];
-  const auto ownBit = uint16_t(1u << module->orientation.ownConnector(direction));
-  const auto facingBit =
-      uint16_t(1u << facing.orientation.ownConnector(geometry::oppositeDirection(direction)));
+  return setLatched(*pair, latched);
+}
+
+Status World::setLatched(const LatchPair& pair, bool latched) {
+  const size_t a = slotOf(pair.a);
+  const size_t b = slotOf(pair.b);
+  if (a == kNotFound || b == kNotFound) {
+    return Error{"no module " + std::to_string((a == kNotFound ? pair.a : pair.b).value)};
+  }
+  for (const int connector : {pair.connectorA, pair.connectorB}) {
+    if (connector < 0 || connector >= geometry::kDirectionCount) {
+      return Error{"no connector " + std::to_string(connector)};
+    }
+  }
+  const auto bitA = uint16_t(1u << pair.connectorA);
+  const auto bitB = uint16_t(1u << pair.connectorB);
   if (latched) {
-    module->latches |= ownBit;
-    facing.latches |= facingBit;
+    modules_[a].latches |= bitA;
+    modules_[b].latches |= bitB;
   } else {
-    module->latches &= uint16_t(~ownBit);
-    facing.latches &= uint16_t(~facingBit);
+    modules_[a].latches &= uint16_t(~bitA);
+    modules_[b].latches &= uint16_t(~bitB);
   }
   return Ok{};
 }

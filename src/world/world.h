@@ -2,7 +2,9 @@
 //
 // The World is the mutable state of a scene (the constant tables live in geometry/ and datom/).
 // Modules are stored contiguously; a module is named across layers by its ModuleId. Pointers and
-// references to modules stay valid until the next add or remove.
+// references to modules stay valid until the next add or remove. Modules are handed out
+// read-only: every change goes through a World function, so the occupancy index always follows
+// the cells.
 #pragma once
 
 #include <optional>
@@ -38,15 +40,17 @@ class World {
   // Moves a module to an empty cell inside the world; latches are left to the caller.
   Status move(ModuleId id, const geometry::Cell& to);
 
+  // Turns or paints a module. Refuses an unknown id.
+  Status setOrientation(ModuleId id, geometry::Orientation orientation);
+  Status setColor(ModuleId id, Color color);
+
   size_t size() const { return modules_.size(); }
   std::span<const Module> modules() const { return modules_; }
 
   const Module* find(ModuleId id) const;
-  Module* find(ModuleId id);
 
   // The position of a module in modules(); stable until a module is removed.
   std::optional<uint32_t> indexOf(ModuleId id) const;
-  Module& moduleAtIndex(uint32_t index) { return modules_[index]; }
 
   // The module in a cell, or nullptr. The hot path of rule evaluation.
   const Module* moduleAt(const geometry::Cell& cell) const {
@@ -71,6 +75,13 @@ class World {
   // Latches or releases the connector pair between a module and its neighbour in world direction
   // d. Refuses when there is no neighbour there.
   Status setLatched(ModuleId id, int direction, bool latched);
+  // Latches or releases any pair of connectors, facing across the lattice or not: the one way
+  // latch bits change (the hinge of a motion holds a mobile that is between cells). Refuses an
+  // unknown module or connector.
+  Status setLatched(const LatchPair& pair, bool latched);
+  // The pair between a module and its neighbour in world direction d, or nullopt when the cell
+  // there is empty.
+  std::optional<LatchPair> facingPair(const Module& module, int direction) const;
 
   // Whether the module's connector facing world direction d is latched.
   bool isLatched(const Module& module, int direction) const;

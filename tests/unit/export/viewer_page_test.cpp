@@ -6,7 +6,7 @@
 
 #include "common/atomic_file.h"
 #include "io/scene_file.h"
-#include "sim/trace.h"
+#include "record/trace_writer.h"
 #include "support/temporary_directory.h"
 #include "support/world_builder.h"
 
@@ -24,12 +24,12 @@ world::World twoModules() {
 
 // A trace with a header and a few changes, as the simulator writes it.
 std::string smallTrace(const std::string& description = "two modules") {
-  sim::TraceRecorder recorder;
-  recorder.header(twoModules(), description);
-  recorder.note(0, "a <note> with </script> inside");
-  recorder.piston(0, world::ModuleId{1}, 0, 0, 1, program::kSecond / 2);
-  recorder.latch(program::kSecond, world::ModuleId{1}, 0, world::ModuleId{2}, 6, false);
-  return recorder.text();
+  record::TraceWriter trace;
+  trace.header(twoModules(), description);
+  trace.note(0, "a <note> with </script> inside");
+  trace.pistonMoving(0, {ModuleId{1}, 0, 0, 1, 0, program::kSecond / 2});
+  trace.latchChanged(program::kSecond, {ModuleId{1}, 0, ModuleId{2}, 6}, false);
+  return trace.text();
 }
 
 // The text of the element with this id in a page, un-escaped.

@@ -53,10 +53,11 @@ inline ::testing::AssertionResult sameScene(const Scene& a, const Scene& b) {
   return ::testing::AssertionSuccess();
 }
 
-// The shared reference scenes, or an empty path when the shared folder is absent.
-inline std::filesystem::path sharedScene(const std::string& name) {
-  const std::filesystem::path path = std::filesystem::path(DATOMSIM_SHARED_DIR) / "scenes" / name;
-  return std::filesystem::exists(path) ? path : std::filesystem::path();
+// A scene file of the repository's scenes/ folder, e.g. VisibleSim's reference files of the
+// paper's scenes. The path is returned even when the file is missing, so that the test can fail
+// naming it: ASSERT_TRUE(std::filesystem::exists(path)) << path.
+inline std::filesystem::path repositoryScene(const std::string& name) {
+  return std::filesystem::path(DATOMSIM_SOURCE_DIR "/scenes/") / name;
 }
 
 }  // namespace datomsim::io::testing

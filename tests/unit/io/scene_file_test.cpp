@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -114,8 +115,8 @@ TEST(SceneFile, AFailedWriteLeavesTheOldFileAndNoTemporaryFile) {
 
 // The round trip: XML -> JSON -> XML gives back modules, grid, block size and viewer.
 TEST(SceneFile, PaperSceneSurvivesXmlToJsonToXml) {
-  const auto original = testing::sharedScene("paper-arch-hole1.xml");
-  if (original.empty()) GTEST_SKIP() << "shared scenes not present";
+  const auto original = testing::repositoryScene("paper-arch-hole1.xml");
+  ASSERT_TRUE(std::filesystem::exists(original)) << original << " is missing";
   TemporaryDirectory directory;
   const auto xml = readScene(original);
   ASSERT_TRUE(xml.ok()) << xml.error();

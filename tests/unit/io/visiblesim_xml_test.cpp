@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <filesystem>
 #include <string>
 
 #include "io/scene_file.h"
@@ -299,8 +300,8 @@ TEST(VisibleSimXml, RefusesToWriteAttributeNamesThatAreNotXmlNames) {
 }
 
 TEST(VisibleSimXml, ReadsThePapersScene) {
-  const auto path = testing::sharedScene("paper-arch-hole1.xml");
-  if (path.empty()) GTEST_SKIP() << "shared scenes not present";
+  const auto path = testing::repositoryScene("paper-arch-hole1.xml");
+  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing";
   const auto scene = readScene(path);
   ASSERT_TRUE(scene.ok()) << scene.error();
   EXPECT_EQ(scene->world.size(), 131u);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "io/json_scene.h"
@@ -53,8 +54,8 @@ class PaperArchFiles : public ::testing::TestWithParam<int> {
 
 // Module by module (ids, cells, colours, orientations, order) against VisibleSim's files.
 TEST_P(PaperArchFiles, MatchesTheReferenceXml) {
-  const auto path = io::testing::sharedScene(stem() + ".xml");
-  if (path.empty()) GTEST_SKIP() << "shared scenes not present";
+  const auto path = io::testing::repositoryScene(stem() + ".xml");
+  ASSERT_TRUE(std::filesystem::exists(path)) << path << " is missing";
   const auto reference = io::readScene(path);
   ASSERT_TRUE(reference.ok()) << reference.error();
   const auto generated = paperArch(GetParam());

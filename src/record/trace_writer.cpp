@@ -1,4 +1,4 @@
-#include "sim/trace.h"
+#include "record/trace_writer.h"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include "datom/parts.h"
 #include "geometry/lattice.h"
 
-namespace datomsim::sim {
+namespace datomsim::record {
 
 using geometry::Vec3;
 
@@ -62,9 +62,9 @@ bool movesWith(const datom::Part& part, int piston) {
 
 }  // namespace
 
-TraceRecorder::TraceRecorder(const datom::Dimensions& dimensions) : dimensions_(dimensions) {}
+TraceWriter::TraceWriter(const datom::Dimensions& dimensions) : dimensions_(dimensions) {}
 
-void TraceRecorder::header(const world::World& world, const std::string& description) {
+void TraceWriter::header(const world::World& world, const std::string& description) {
   auto out = std::back_inserter(text_);
   const datom::Dimensions& d = dimensions_;
   fmt::format_to(out,
@@ -137,16 +137,23 @@ void TraceRecorder::header(const world::World& world, const std::string& descrip
   text_ += "]}\n";
 }
 
-void TraceRecorder::piston(program::Time t, world::ModuleId module, int ownPiston, double from,
-                           double to, program::Time duration) {
+void TraceWriter::pistonMoving(program::Time, const sim::PistonMove& move) {
   fmt::format_to(std::back_inserter(text_),
                  "{{\"t\":{},\"piston\":{{\"m\":{},\"p\":{},\"from\":{},\"to\":{},\"d\":{}}}}}\n",
-                 seconds(t), module.value, ownPiston, number(from), number(to), seconds(duration));
+                 seconds(move.start), move.module.value, move.piston, number(move.from),
+                 number(move.to), seconds(move.duration));
 }
 
-void TraceRecorder::turn(program::Time t, world::ModuleId module, const Vec3& axis,
-                         const Vec3& centre, double degrees, program::Time duration,
-                         bool compressing) {
+void TraceWriter::motionStarted(program::Time t, const sim::MotionStart& start) {
+  const motion::Rule& rule = *start.plan->rule;
+  note(t, fmt::format("module {} turns {} about pivot {} (piston {}) towards {}",
+                      start.mobile.value, motion::toString(rule.turn), start.pivot.value, rule.up,
+                      geometry::toString(start.plan->goal)));
+}
+
+void TraceWriter::turnStarted(program::Time t, const sim::QuarterTurn& turn) {
+  const Vec3 centre = hinge(geometry::worldPosition(turn.pivotCell, spacing()), turn.up, turn.side);
+  const bool compressing = turn.first;
   // The body turns twice as far as each connector (pivot's and mobile's turn together): the
   // fraction turned is theta(f) / 45 degrees, with f going 0 -> 1, or 1 -> 0 on the way back.
   std::string progress;
@@ -161,11 +168,11 @@ void TraceRecorder::turn(program::Time t, world::ModuleId module, const Vec3& ax
   fmt::format_to(std::back_inserter(text_),
                  "{{\"t\":{},\"turn\":{{\"m\":{},\"axis\":{},\"centre\":{},\"deg\":{},"
                  "\"d\":{},\"progress\":[{}]}}}}\n",
-                 seconds(t), module.value, vec(axis), vec(centre), number(degrees),
-                 seconds(duration), progress);
+                 seconds(t), turn.mobile.value, vec(geometry::axisVector(turn.axis)), vec(centre),
+                 number(turn.degrees), seconds(turn.duration), progress);
 }
 
-Vec3 TraceRecorder::hinge(const Vec3& pivot, int up, int side) const {
+Vec3 TraceWriter::hinge(const Vec3& pivot, int up, int side) const {
   // Compressed, the pivot's connectors lie in the plane at c/2 + e along U; the hinge edge is
   // (r + c/2) / sqrt2 out towards the side (datom/piston_pose.h).
   const datom::Dimensions& d = dimensions_;
@@ -173,33 +180,32 @@ Vec3 TraceRecorder::hinge(const Vec3& pivot, int up, int side) const {
          geometry::axisVector(side) * ((d.radius() + d.connectorWidth() / 2) / std::sqrt(2.0));
 }
 
-void TraceRecorder::place(program::Time t, world::ModuleId module, const geometry::Cell& cell,
-                          geometry::Orientation orientation) {
+void TraceWriter::modulePlaced(program::Time t, const world::Module& module) {
+  const geometry::Cell& cell = module.cell;
   fmt::format_to(std::back_inserter(text_),
                  "{{\"t\":{},\"place\":{{\"m\":{},\"cell\":[{},{},{}],\"pos\":{},\"o\":{}}}}}\n",
-                 seconds(t), module.value, cell.x, cell.y, cell.z,
-                 vec(geometry::worldPosition(cell, spacing())), orientation.code());
+                 seconds(t), module.id.value, cell.x, cell.y, cell.z,
+                 vec(geometry::worldPosition(cell, spacing())), module.orientation.code());
 }
 
-void TraceRecorder::latch(program::Time t, world::ModuleId a, int connectorA, world::ModuleId b,
-                          int connectorB, bool latched) {
+void TraceWriter::latchChanged(program::Time t, const world::LatchPair& pair, bool latched) {
   fmt::format_to(std::back_inserter(text_),
                  "{{\"t\":{},\"latch\":{{\"a\":{},\"ca\":{},\"b\":{},\"cb\":{},\"on\":{}}}}}\n",
-                 seconds(t), a.value, connectorA, b.value, connectorB, latched);
+                 seconds(t), pair.a.value, pair.connectorA, pair.b.value, pair.connectorB, latched);
 }
 
-void TraceRecorder::color(program::Time t, world::ModuleId module, world::Color color) {
+void TraceWriter::colorChanged(program::Time t, ModuleId module, Color color) {
   fmt::format_to(std::back_inserter(text_),
                  "{{\"t\":{},\"color\":{{\"m\":{},\"rgb\":[{},{},{}]}}}}\n", seconds(t),
                  module.value, color.r, color.g, color.b);
 }
 
-void TraceRecorder::note(program::Time t, const std::string& text) {
+void TraceWriter::note(program::Time t, const std::string& text) {
   fmt::format_to(std::back_inserter(text_), "{{\"t\":{},\"note\":{}}}\n", seconds(t), quoted(text));
 }
 
-void TraceRecorder::footer(program::Time t, const std::string& summaryJson) {
+void TraceWriter::footer(program::Time t, const std::string& summaryJson) {
   fmt::format_to(std::back_inserter(text_), "{{\"t\":{},\"end\":{}}}\n", seconds(t), summaryJson);
 }
 
-}  // namespace datomsim::sim
+}  // namespace datomsim::record

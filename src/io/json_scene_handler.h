@@ -1,0 +1,114 @@
+// Private to the JSON scene reader: the SAX handler that builds a Scene from nlohmann's parse
+// events, without holding the document as a tree.
+//
+// Its work is split in two: json_scene_reader.cpp walks the document's structure (top object,
+// modules array, module objects) and captures every other value whole; json_scene_fields.cpp
+// checks each key and captured value against docs/file-formats.md and builds the scene.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "common/result.h"
+#include "io/scene.h"
+
+namespace datomsim::io::detail {
+
+// Ordered, so that viewer attributes keep their file order through a round trip.
+using Json = nlohmann::ordered_json;
+
+// Where the handler is in the document, outside captured values.
+enum class Place { kStart, kTop, kModules, kModule, kEnd };
+
+struct PendingModule {
+  world::Module module;
+  bool explicitId = false;
+};
+
+// The SAX handler. The document structure (top object, modules array, module objects) is walked
+// by events; each field's value is captured as a small Json and checked when complete, so error
+// messages can show it. Modules are collected first and placed at the end, because "grid" may
+// come after "modules" in a hand-written file.
+class SceneHandler {
+ public:
+  explicit SceneHandler(std::string_view source) : source_(source) {}
+
+  // nlohmann's SAX interface (names fixed by the library).
+  bool null() { return scalar(Json(nullptr)); }
+  bool boolean(bool v) { return scalar(Json(v)); }
+  bool number_integer(Json::number_integer_t v) { return scalar(Json(v)); }
+  bool number_unsigned(Json::number_unsigned_t v) { return scalar(Json(v)); }
+  bool number_float(Json::number_float_t v, const Json::string_t&) { return scalar(Json(v)); }
+  bool string(Json::string_t& v) { return scalar(Json(std::move(v))); }
+  // Only binary formats (CBOR, ...) produce binary values, never JSON text.
+  bool binary(Json::binary_t&) { return scalar(Json()); }
+  bool start_object(std::size_t) { return open(Json::object()); }
+  bool start_array(std::size_t) { return open(Json::array()); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+
+  // Checks a key of the top object or of a module: known, and not seen before in that object.
+  bool key(Json::string_t& name);
+
+  bool parse_error(std::size_t position, const std::string&, const Json::exception& exception);
+
+  std::optional<size_t> syntaxPosition() const { return syntaxPosition_; }
+  const std::string& syntaxMessage() const { return syntaxMessage_; }
+  const std::string& error() const { return error_; }
+
+  // Checks what only the whole document can tell, and builds the scene.
+  Result<Scene> finish();
+
+ private:
+  // The document's structure (json_scene_reader.cpp).
+
+  // A scalar event: part of a captured value, or a whole value by itself.
+  bool scalar(Json value);
+  // A start_object or start_array event.
+  bool open(Json container);
+  bool close();
+  Json& insertIntoCapture(Json value);
+
+  // The fields' meaning (json_scene_fields.cpp).
+
+  // A complete value for the current key.
+  bool dispatch();
+  bool topField();
+  bool readVisibleSim(const Json& v);
+  bool moduleField();
+  bool finishModule();
+  // Why module i cannot be placed in the world built so far.
+  Error placementError(size_t i);
+  std::string modulePath() const;
+  // Records the error "source: path: message" and returns false, to stop the parse.
+  bool fail(std::string_view path, std::string_view message);
+  Error failure(std::string_view path, std::string_view message);
+
+  std::string_view source_;
+  Place place_ = Place::kStart;
+  std::string key_;
+  uint32_t topSeen_ = 0;
+  uint32_t moduleSeen_ = 0;
+
+  bool capturing_ = false;
+  Json captured_;
+  std::vector<Json*> captureStack_;
+  std::string captureKey_;
+
+  Scene scene_;
+  world::Bounds bounds_;
+  PendingModule module_;
+  std::vector<PendingModule> pending_;
+
+  std::optional<size_t> syntaxPosition_;
+  std::string syntaxMessage_;
+  std::string error_;
+};
+
+}  // namespace datomsim::io::detail

@@ -1,0 +1,165 @@
+// The JSON scene reader's entry points and its walk of the document's structure: nlohmann's SAX
+// events move the handler through the top object, the modules array and each module object, and
+// every other value is captured whole to be checked by json_scene_fields.cpp. A syntax error is
+// reported at its line and column.
+#include "io/json_scene.h"
+
+#include <fmt/format.h>
+
+#include <string>
+#include <utility>
+
+#include "io/json_scene_handler.h"
+
+namespace datomsim::io {
+
+namespace detail {
+
+bool SceneHandler::parse_error(std::size_t position, const std::string&,
+                               const Json::exception& exception) {
+  syntaxPosition_ = position;
+  // nlohmann's text reads "[json.exception.parse_error.101] parse error at line 1, column 2:
+  // syntax error ..."; we print our own position, so keep what follows it.
+  const std::string what = exception.what();
+  size_t start = what.find(", column ");
+  start = start == std::string::npos ? what.find("] ") : what.find(": ", start);
+  syntaxMessage_ = start == std::string::npos ? what : what.substr(start + 2);
+  return false;
+}
+
+// A scalar event: part of a captured value, or a whole value by itself.
+bool SceneHandler::scalar(Json value) {
+  if (capturing_) {
+    insertIntoCapture(std::move(value));
+    return true;
+  }
+  if (place_ == Place::kStart) return fail("", "expected a JSON object at the top level");
+  captured_ = std::move(value);
+  return dispatch();
+}
+
+// A start_object or start_array event.
+bool SceneHandler::open(Json container) {
+  if (capturing_) {
+    captureStack_.push_back(&insertIntoCapture(std::move(container)));
+    return true;
+  }
+  // The document's own structure.
+  switch (place_) {
+    case Place::kStart:
+      if (!container.is_object()) return fail("", "expected a JSON object at the top level");
+      place_ = Place::kTop;
+      return true;
+    case Place::kTop:
+      if (key_ == "modules" && container.is_array()) {
+        place_ = Place::kModules;
+        return true;
+      }
+      break;
+    case Place::kModules:
+      if (container.is_object()) {
+        place_ = Place::kModule;
+        moduleSeen_ = 0;
+        module_ = {};
+        return true;
+      }
+      break;
+    case Place::kModule:
+    case Place::kEnd:
+      break;
+  }
+  // Any other value is captured whole, then checked.
+  captured_ = std::move(container);
+  if (captured_.is_array()) captured_.get_ref<Json::array_t&>().reserve(4);
+  captureStack_.assign(1, &captured_);
+  capturing_ = true;
+  return true;
+}
+
+bool SceneHandler::close() {
+  if (capturing_) {
+    captureStack_.pop_back();
+    if (!captureStack_.empty()) return true;
+    capturing_ = false;
+    return dispatch();
+  }
+  switch (place_) {
+    case Place::kTop:
+      place_ = Place::kEnd;
+      return true;
+    case Place::kModules:
+      place_ = Place::kTop;
+      return true;
+    case Place::kModule:
+      place_ = Place::kModules;
+      return finishModule();
+    case Place::kStart:
+    case Place::kEnd:
+      break;
+  }
+  return true;
+}
+
+Json& SceneHandler::insertIntoCapture(Json value) {
+  Json& parent = *captureStack_.back();
+  if (parent.is_array()) {
+    parent.push_back(std::move(value));
+    return parent.back();
+  }
+  return parent[captureKey_] = std::move(value);
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::Json;
+using detail::SceneHandler;
+
+// Line and column of a byte offset as nlohmann counts them: `position` characters were read, the
+// column counts characters since the last newline.
+struct LineColumn {
+  size_t line = 1;
+  size_t column = 0;
+  void advance(char c) {
+    if (c == '\n') {
+      ++line;
+      column = 0;
+    } else {
+      ++column;
+    }
+  }
+};
+
+Error syntaxError(const SceneHandler& handler, std::string_view source, LineColumn at) {
+  return Error{fmt::format("{}:{}:{}: {}", source, at.line, at.column, handler.syntaxMessage())};
+}
+
+}  // namespace
+
+Result<Scene> parseJsonScene(std::string_view text, std::string_view source) {
+  SceneHandler handler(source);
+  if (Json::sax_parse(text.begin(), text.end(), &handler)) return handler.finish();
+  if (const auto position = handler.syntaxPosition()) {
+    LineColumn at;
+    for (size_t i = 0; i < *position && i < text.size(); ++i) at.advance(text[i]);
+    return syntaxError(handler, source, at);
+  }
+  return Error{handler.error()};
+}
+
+Result<Scene> parseJsonScene(std::istream& input, std::string_view source) {
+  SceneHandler handler(source);
+  if (Json::sax_parse(input, &handler)) return handler.finish();
+  if (const auto position = handler.syntaxPosition()) {
+    input.clear();
+    input.seekg(0);
+    LineColumn at;
+    char c;
+    for (size_t i = 0; i < *position && input.get(c); ++i) at.advance(c);
+    return syntaxError(handler, source, at);
+  }
+  return Error{handler.error()};
+}
+
+}  // namespace datomsim::io

@@ -1,0 +1,58 @@
+// The trace of a run: what pictures and the browser viewer replay (docs/trace-format.md), written
+// by a recorder that listens to the simulator's announcements (sim/observer.h).
+//
+// JSON Lines. The first line is the header: format and version, the module model (dimensions,
+// the 24 orientations as matrices, the kinematics of a piston sampled from the C++ model) and the
+// initial scene. Each following line is one change at one time: a piston moving, a mobile turning
+// about a hinge, a module placed, a latch made or released, a colour. Times are in seconds. The
+// poses the viewer needs and the simulator does not (the hinge a mobile turns about, the fraction
+// turned) are worked out here, from the module's model.
+#pragma once
+
+#include <string>
+
+#include "common/result.h"
+#include "datom/dimensions.h"
+#include "geometry/cell.h"
+#include "geometry/orientation.h"
+#include "geometry/vec3.h"
+#include "program/module_program.h"
+#include "sim/observer.h"
+#include "world/world.h"
+
+namespace datomsim::record {
+
+class TraceWriter final : public sim::Observer {
+ public:
+  explicit TraceWriter(const datom::Dimensions& dimensions = {});
+
+  // The first line: call before the run, with the world as it starts.
+  void header(const world::World& world, const std::string& description);
+  // A free-form marker the viewer shows on its timeline (e.g. "motion 3 starts").
+  void note(program::Time t, const std::string& text);
+  // The last line: totals of the run.
+  void footer(program::Time t, const std::string& summaryJson);
+
+  // What the simulator announces.
+  void pistonMoving(program::Time t, const sim::PistonMove& move) override;
+  void latchChanged(program::Time t, const world::LatchPair& pair, bool latched) override;
+  void motionStarted(program::Time t, const sim::MotionStart& start) override;
+  void turnStarted(program::Time t, const sim::QuarterTurn& turn) override;
+  void modulePlaced(program::Time t, const world::Module& module) override;
+  void colorChanged(program::Time t, ModuleId module, Color color) override;
+
+  // The hinge a mobile turns about: the outer edge of the pivot's connector towards `side`
+  // (world axis: -F for the first quarter turn, G for the second) when the pivot's piston `up`
+  // is compressed, where the latched faces meet (datom-model.md).
+  geometry::Vec3 hinge(const geometry::Vec3& pivot, int up, int side) const;
+
+  double spacing() const { return 2.0 * dimensions_.radius(); }
+  // Everything recorded so far; the command line writes it to a file.
+  const std::string& text() const { return text_; }
+
+ private:
+  datom::Dimensions dimensions_;
+  std::string text_;
+};
+
+}  // namespace datomsim::record

@@ -1,0 +1,168 @@
+#include "sim/mechanics.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "geometry/lattice.h"
+
+namespace datomsim::sim {
+
+using world::Module;
+
+namespace {
+
+constexpr uint8_t pistonBit(int piston) {
+  return uint8_t(1u << piston);
+}
+
+}  // namespace
+
+Mechanics::Mechanics(world::World& world, EventQueue& agenda, const Announcer& announce,
+                     program::Time deformationTime)
+    : world_(world),
+      agenda_(agenda),
+      announce_(announce),
+      deformationTime_(deformationTime),
+      pistons_(world.size()) {}
+
+Status Mechanics::compress(uint32_t index, int ownPiston, bool inMotion) {
+  Pistons& state = pistons_[index];
+  const Module& module = world_.modules()[index];
+  if (ownPiston < 0 || ownPiston >= geometry::kAxisCount) {
+    return Error{fmt::format("module {}: no piston {}", module.id.value, ownPiston)};
+  }
+  if (inMotion) {
+    return Error{fmt::format("module {}: cannot compress piston {} during a motion",
+                             module.id.value, ownPiston)};
+  }
+  if (state.piston >= 0) {
+    return Error{
+        fmt::format("module {}: cannot compress piston {}: piston {} is not at rest "
+                    "(only one piston at a time, paper section III.B)",
+                    module.id.value, ownPiston, state.piston)};
+  }
+  state.piston = static_cast<int8_t>(ownPiston);
+  state.phase = Phase::kCompressing;
+  state.compressedMask |= pistonBit(ownPiston);
+  touch(index);
+  // The 4 connectors the piston moves turn away from their neighbours: those latches let go.
+  const int axis = module.orientation.worldAxis(ownPiston);
+  for (const int direction : geometry::directionsOfAxis(axis)) {
+    if (world_.isLatched(module, direction)) setLatched(module, direction, false);
+  }
+  const program::Time now = agenda_.now();
+  announce_(&Observer::pistonMoving, now,
+            PistonMove{module.id, ownPiston, 0, 1, now, deformationTime_, PistonCause::kProgram});
+  agenda_.schedule(now + deformationTime_, EventKind::kDeformationDone, index, 0);
+  return Ok{};
+}
+
+Status Mechanics::release(uint32_t index) {
+  Pistons& state = pistons_[index];
+  const Module& module = world_.modules()[index];
+  if (state.phase != Phase::kCompressed) {
+    return Error{fmt::format("module {}: no compressed piston to release", module.id.value)};
+  }
+  // Releasing while a mobile passes is allowed here: the invariant check catches it.
+  state.phase = Phase::kReleasing;
+  const program::Time now = agenda_.now();
+  announce_(
+      &Observer::pistonMoving, now,
+      PistonMove{module.id, state.piston, 1, 0, now, deformationTime_, PistonCause::kProgram});
+  agenda_.schedule(now + deformationTime_, EventKind::kDeformationDone, index, 0);
+  return Ok{};
+}
+
+bool Mechanics::finishDeformation(uint32_t index, std::span<const int16_t> motionOf) {
+  Pistons& state = pistons_[index];
+  const ModuleId id = world_.modules()[index].id;
+  const int piston = state.piston;
+  if (state.phase == Phase::kCompressing) {
+    state.phase = Phase::kCompressed;
+    announce_(&Observer::pistonCompressed, agenda_.now(), id, piston);
+    return true;
+  }
+  if (state.phase == Phase::kReleasing) {
+    state.phase = Phase::kRest;
+    state.compressedMask &= uint8_t(~pistonBit(piston));
+    state.piston = -1;
+    relatch(index, motionOf);
+    announce_(&Observer::pistonReleased, agenda_.now(), id, piston);
+    return true;
+  }
+  return false;  // a double deformation's switch, driven by its motion
+}
+
+void Mechanics::drive(uint32_t index, int ownPiston, program::Time duration) {
+  Pistons& state = pistons_[index];
+  state.piston = static_cast<int8_t>(ownPiston);
+  state.phase = Phase::kDriving;
+  state.compressedMask |= pistonBit(ownPiston);
+  touch(index);
+  const program::Time now = agenda_.now();
+  announce_(
+      &Observer::pistonMoving, now,
+      PistonMove{world_.modules()[index].id, ownPiston, 0, 1, now, duration, PistonCause::kMotion});
+}
+
+void Mechanics::driveBack(uint32_t index, program::Time duration) {
+  const program::Time now = agenda_.now();
+  announce_(&Observer::pistonMoving, now,
+            PistonMove{world_.modules()[index].id, pistons_[index].piston, 1, 0, now, duration,
+                       PistonCause::kMotion});
+}
+
+void Mechanics::rest(uint32_t index) {
+  Pistons& state = pistons_[index];
+  state.compressedMask &= uint8_t(~pistonBit(state.piston));
+  state.piston = -1;
+  state.phase = Phase::kRest;
+  touch(index);
+}
+
+void Mechanics::switchPiston(uint32_t index, int ownPiston) {
+  Pistons& state = pistons_[index];
+  const ModuleId id = world_.modules()[index].id;
+  const program::Time now = agenda_.now();
+  announce_(
+      &Observer::pistonMoving, now,
+      PistonMove{id, state.piston, 1, 0, now, deformationTime_, PistonCause::kDoubleDeformation});
+  announce_(&Observer::pistonMoving, now,
+            PistonMove{id, ownPiston, 0, 1, now + deformationTime_, deformationTime_,
+                       PistonCause::kDoubleDeformation});
+  state.compressedMask &= uint8_t(~pistonBit(state.piston));
+  state.compressedMask |= pistonBit(ownPiston);
+  state.piston = static_cast<int8_t>(ownPiston);
+  touch(index);
+}
+
+void Mechanics::setLatched(const Module& module, int direction, bool latched) {
+  setLatched(*world_.facingPair(module, direction), latched);
+}
+
+void Mechanics::setLatched(const world::LatchPair& pair, bool latched) {
+  // Every pair comes from the world's facingPair or a motion's hinge: a refusal is a bug.
+  const Status changed = world_.setLatched(pair, latched);
+  if (!changed.ok()) throw std::logic_error("latch change refused: " + changed.error());
+  announce_(&Observer::latchChanged, agenda_.now(), pair, latched);
+}
+
+void Mechanics::relatch(uint32_t index, std::span<const int16_t> motionOf) {
+  const Module& module = world_.modules()[index];
+  for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
+    const Module* neighbour = world_.neighbour(module, direction);
+    if (!neighbour || world_.isLatched(module, direction)) continue;
+    const uint32_t other = *world_.indexOf(neighbour->id);
+    if (motionOf[other] >= 0) continue;
+    const Pistons& pistons = pistons_[other];
+    if (pistons.piston >= 0 &&
+        geometry::axisMovesDirection(neighbour->orientation.worldAxis(pistons.piston),
+                                     geometry::oppositeDirection(direction))) {
+      continue;
+    }
+    setLatched(module, direction, true);
+  }
+}
+
+}  // namespace datomsim::sim

@@ -1,0 +1,91 @@
+// Module mechanics: the pistons of every module and the latches between modules, each with one
+// way to change it.
+//
+// Contract:
+//   - A module has at most one piston away from rest (paper, section III.B): compress() refuses
+//     a second one with a reason a program can read.
+//   - Compressing a piston turns its 4 connectors 45 degrees away from their neighbours: their
+//     latches let go at once. When a piston is back at rest, the module latches every connector
+//     to a facing neighbour whose own connector is at rest (relatch).
+//   - Latch bits live in the world (a scene's state); they change only through setLatched here,
+//     which announces the change. Piston states live here; every move is announced when it
+//     starts, and the end of a deformation a program asked for too.
+//   - touched() lists the modules whose pistons changed during the current event: the only ones
+//     the invariant "one piston at a time" needs to look at.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "common/result.h"
+#include "sim/event_queue.h"
+#include "sim/observer.h"
+#include "world/world.h"
+
+namespace datomsim::sim {
+
+class Mechanics {
+ public:
+  enum class Phase : uint8_t {
+    kRest,
+    kCompressing,  // a program's compression, under way
+    kCompressed,
+    kReleasing,  // a program's release, under way
+    kDriving,    // moved by a motion: the pivot's U, the mobile's F
+  };
+
+  struct Pistons {
+    int8_t piston = -1;  // own piston away from rest, or -1
+    Phase phase = Phase::kRest;
+    uint8_t compressedMask = 0;  // own pistons away from rest: the invariant wants at most one
+  };
+
+  // `deformationTime`: from rest to fully compressed, and back.
+  Mechanics(world::World& world, EventQueue& agenda, const Announcer& announce,
+            program::Time deformationTime);
+
+  const Pistons& pistons(uint32_t index) const { return pistons_[index]; }
+
+  // What a program asks. Refused with the reason: no such piston, the module is in a motion,
+  // another piston is not at rest; release: nothing compressed. The end comes as a
+  // deformation-done event, to be handed to finishDeformation.
+  Status compress(uint32_t index, int ownPiston, bool inMotion);
+  Status release(uint32_t index);
+  // The deformation-done event. True when a program's compression or release is over (its
+  // program hears of it); false for the end of a double deformation's switch.
+  // `motionOf`: the motion slot of every module, -1 when at rest (MotionExecutor::motionOf).
+  bool finishDeformation(uint32_t index, std::span<const int16_t> motionOf);
+
+  // What a motion does to the pistons of its pivot and mobile: compress one over the first
+  // quarter turn, announce its return over the second, then put it at rest.
+  void drive(uint32_t index, int ownPiston, program::Time duration);
+  void driveBack(uint32_t index, program::Time duration);
+  void rest(uint32_t index);
+  // A def(X, Y) module half-way through a motion: releases X, then compresses Y, one
+  // deformation time each.
+  void switchPiston(uint32_t index, int ownPiston);
+
+  // Latches or releases the pair facing across world direction d (a neighbour must be there),
+  // or any pair (a motion's hinge).
+  void setLatched(const world::Module& module, int direction, bool latched);
+  void setLatched(const world::LatchPair& pair, bool latched);
+  // Latches every connector of a module to a facing neighbour at rest whose own connector is at
+  // rest too, skipping modules in a motion.
+  void relatch(uint32_t index, std::span<const int16_t> motionOf);
+
+  std::span<const uint32_t> touched() const { return touched_; }
+  void clearTouched() { touched_.clear(); }
+
+ private:
+  void touch(uint32_t index) { touched_.push_back(index); }
+
+  world::World& world_;
+  EventQueue& agenda_;
+  const Announcer& announce_;
+  program::Time deformationTime_;
+  std::vector<Pistons> pistons_;  // by world module index
+  std::vector<uint32_t> touched_;
+};
+
+}  // namespace datomsim::sim

@@ -1,0 +1,117 @@
+// What the simulator announces: every change of state, typed, in the order it happens, stamped
+// with the simulated time it starts at.
+//
+// Recorders subscribe (Simulator::subscribe): the run's statistics (sim/statistics.h), the trace
+// the viewer replays (record/trace_writer.h), and any other. The simulator itself never formats
+// or stores a record, and a recorder never changes the simulation: it sees values and const
+// references that are valid only during the call.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "common/module_values.h"
+#include "geometry/cell.h"
+#include "geometry/orientation.h"
+#include "motion/motion_values.h"
+#include "program/message.h"
+#include "sim/event_queue.h"
+#include "world/module.h"
+
+namespace datomsim::sim {
+
+// Why a piston moves.
+enum class PistonCause : uint8_t {
+  kProgram,            // the module's program asked (compress, release)
+  kMotion,             // pivot or mobile driving a motion: the pivot's U, the mobile's F
+  kDoubleDeformation,  // a def(X, Y) module switching from X to Y half-way through a motion
+};
+
+// A piston of a module moving from one compression fraction to another (0 rest, 1 compressed),
+// from `start` for `duration`. `start` may lie after the announcement: a double deformation
+// announces its release of X and its compression of Y together.
+struct PistonMove {
+  ModuleId module;
+  int piston = 0;  // the module's own piston number
+  double from = 0;
+  double to = 0;
+  program::Time start = 0;
+  program::Time duration = 0;
+  PistonCause cause = PistonCause::kProgram;
+};
+
+// A motion's mobile starts to move around its pivot; `plan` holds the rule, the cells and the
+// deformation list.
+struct MotionStart {
+  ModuleId mobile;
+  ModuleId pivot;
+  const motion::Motion* plan = nullptr;
+};
+
+// One quarter turn of a mobile about the hinge it shares with its pivot (docs/simulation.md). The
+// hinge is the outer edge of the pivot's connector on the `side` of the pivot's centre while the
+// pivot compresses its piston `up`; the mobile's body turns by `degrees` about the world axis
+// `axis` through it.
+struct QuarterTurn {
+  ModuleId mobile;
+  ModuleId pivot;
+  geometry::Cell pivotCell;
+  int up = 0;    // U, a world axis
+  int side = 0;  // -F for the first quarter turn, the goal's axis for the second
+  int axis = 0;  // a world axis
+  double degrees = 90;
+  program::Time duration = 0;
+  bool first = true;  // the first quarter turn (pistons compressing) or the second (releasing)
+};
+
+// A motion is over: the mobile is at the goal with its new orientation.
+struct MotionEnd {
+  ModuleId mobile;
+  ModuleId pivot;
+  geometry::Cell from;
+  geometry::Cell goal;
+  geometry::Orientation orientation;
+};
+
+// Every method has an empty default: a recorder overrides what it needs.
+class Observer {
+ public:
+  virtual ~Observer() = default;
+
+  // An event is taken from the agenda, before it acts.
+  virtual void eventStarted(program::Time /*t*/, EventKind /*kind*/, ModuleId /*module*/) {}
+  virtual void messageSent(program::Time /*t*/, ModuleId /*from*/, ModuleId /*to*/,
+                           const program::Message& /*message*/, program::Time /*arrival*/) {}
+  virtual void messageReceived(program::Time /*t*/, ModuleId /*to*/, int /*ownConnector*/,
+                               const program::Message& /*message*/) {}
+  virtual void pistonMoving(program::Time /*t*/, const PistonMove& /*move*/) {}
+  // A compression or release a program asked for has reached its end.
+  virtual void pistonCompressed(program::Time /*t*/, ModuleId /*module*/, int /*piston*/) {}
+  virtual void pistonReleased(program::Time /*t*/, ModuleId /*module*/, int /*piston*/) {}
+  virtual void latchChanged(program::Time /*t*/, const world::LatchPair& /*pair*/,
+                            bool /*latched*/) {}
+  virtual void motionStarted(program::Time /*t*/, const MotionStart& /*start*/) {}
+  virtual void turnStarted(program::Time /*t*/, const QuarterTurn& /*turn*/) {}
+  virtual void turnEnded(program::Time /*t*/, const QuarterTurn& /*turn*/) {}
+  // A module takes a cell and an orientation (a mobile arriving).
+  virtual void modulePlaced(program::Time /*t*/, const world::Module& /*module*/) {}
+  virtual void motionEnded(program::Time /*t*/, const MotionEnd& /*end*/) {}
+  virtual void colorChanged(program::Time /*t*/, ModuleId /*module*/, Color /*color*/) {}
+};
+
+// The subscribers of one simulation; what its parts announce through.
+class Announcer {
+ public:
+  void subscribe(Observer* observer) { observers_.push_back(observer); }
+
+  // Calls one method of every subscriber, in the order they subscribed.
+  template <typename... Parameters, typename... Arguments>
+  void operator()(void (Observer::*method)(Parameters...), Arguments&&... arguments) const {
+    for (Observer* observer : observers_) (observer->*method)(arguments...);
+  }
+
+ private:
+  std::vector<Observer*> observers_;
+};
+
+}  // namespace datomsim::sim

@@ -1,14 +1,27 @@
 #!/usr/bin/env bash
-# Fails when a C++ file differs from what clang-format (the project's .clang-format) would write.
+# Fails when a C++ file differs from what clang-format (the project's .clang-format) would write,
+# or a CMake file from what cmake-format (.cmake-format.yaml) would write.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+mkdir -p build
 mapfile -t files < <(git ls-files '*.cpp' '*.h')
-if ! clang-format --dry-run --Werror "${files[@]}" 2> format.log; then
-  grep -E "^[^ ].*(warning|error)" format.log | head -20 >&2
-  rm -f format.log
+if ! clang-format --dry-run --Werror "${files[@]}" 2> build/format.log; then
+  X | head -20 >&2
+  rm -f build/format.log
   echo "check-format: run clang-format -i on the files above" >&2
   exit 1
 fi
-rm -f format.log
-echo "check-format: ${#files[@]} files formatted"
+rm -f build/format.log
+
+mapfile -t cmake_files < <(git ls-files 'CMakeLists.txt' '*/CMakeLists.txt' '*.cmake')
+unformatted=()
+for file in "${cmake_files[@]}"; do
+  cmake-format --check "$file" > /dev/null 2>&1 || unformatted+=("$file")
+done
+if ((${#unformatted[@]} > 0)); then
+  printf '  %s\n' "${unformatted[@]}" >&2
+  echo "check-format: run cmake-format -i on the files above" >&2
+  exit 1
+fi
+echo "check-format: ${#files[@]} C++ files and ${#cmake_files[@]} CMake files formatted"

@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config git
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtinyxml2-dev libfmt-dev libcairo2-dev
-  clang-format
+  clang-format cmake-format
 )
 # The browser viewer and its end-to-end test (docs/viewer.md).
 # Node.js may come from another source than Debian's packages (with its own npm): the commands

@@ -78,7 +78,7 @@ int FollowGradientProgram::sendToBlockingModules(program::ModuleContext& context
     message.origin = context.cell();
     message.request = nextRequest_++;
     message.axis = d.firstAxis;
-    router_.send(context, message);
+    recordFailure(router_.send(context, message));
     ++sent;
   }
   return sent;
@@ -95,8 +95,9 @@ void FollowGradientProgram::onMessage(program::ModuleContext& context, int ownCo
                                       const Message& message) {
   // A pivot answers the mobile's question from what it stores.
   if (const auto* query = message.as<DistanceQuery>()) {
-    context.send(ownConnector, Message::of(DistanceReply{query->cell, query->candidate,
-                                                         distanceOf(context, query->cell)}));
+    recordFailure(
+        context.send(ownConnector, Message::of(DistanceReply{query->cell, query->candidate,
+                                                             distanceOf(context, query->cell)})));
     return;
   }
   if (const auto* reply = message.as<DistanceReply>()) {
@@ -114,7 +115,7 @@ void FollowGradientProgram::onMessage(program::ModuleContext& context, int ownCo
     if (typed->target == context.cell()) {
       if (router_.firstCopy(*typed)) handleRouted(context, *typed, type);
     } else {
-      router_.send(context, *typed, ownConnector);
+      recordFailure(router_.send(context, *typed, ownConnector));
     }
     return true;
   };
@@ -159,9 +160,9 @@ void FollowGradientProgram::onDeformationDone(program::ModuleContext& context) {
   answer.origin = context.cell();
   answer.request = pending_->request;
   if (releasing_) {
-    router_.send(context, AckRelease{answer});
+    recordFailure(router_.send(context, AckRelease{answer}));
   } else {
-    router_.send(context, AckDeform{answer});
+    recordFailure(router_.send(context, AckDeform{answer}));
   }
   pending_.reset();
 }
@@ -187,7 +188,7 @@ std::string FollowGradientProgram::describeWait() const {
 
 void FollowGradientProgram::fail(const std::string& why) {
   phase_ = Phase::kDone;
-  if (!failure_) failure_ = why;
+  recordFailure(why);
 }
 
 }  // namespace datomsim::algorithms

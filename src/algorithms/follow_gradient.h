@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "algorithms/gradient.h"
-#include "motion/motion.h"
+#include "motion/motion_values.h"
 
 namespace datomsim::algorithms {
 
@@ -50,7 +50,6 @@ class FollowGradientProgram : public GradientProgram {
   // The mobile's cells, start first; and whether it reached G.
   const std::vector<geometry::Cell>& path() const { return path_; }
   bool arrived() const { return arrived_; }
-  const std::optional<std::string>& failure() const { return failure_; }
   // What the mobile is doing or waiting for, for a run that ends before it arrives.
   std::string describeWait() const;
 
@@ -79,7 +78,6 @@ class FollowGradientProgram : public GradientProgram {
   uint32_t nextRequest_ = 1;
   std::vector<geometry::Cell> path_;
   bool arrived_ = false;
-  std::optional<std::string> failure_;
   // Blocking module state: who asked, to answer once the piston is done.
   std::optional<RoutedMsg> pending_;
   bool releasing_ = false;

@@ -19,7 +19,7 @@ void GradientProgram::onMessage(program::ModuleContext& context, int ownConnecto
   // The mobile stores no distance, but it passes routed notices on like any module.
   if (isMobile(context)) {
     if (const auto* notice = message.as<DistanceNotice>()) {
-      router_.send(context, *notice, ownConnector);
+      recordFailure(router_.send(context, *notice, ownConnector));
     }
     return;
   }
@@ -29,7 +29,7 @@ void GradientProgram::onMessage(program::ModuleContext& context, int ownConnecto
     }
   } else if (const auto* notice = message.as<DistanceNotice>()) {
     if (notice->target != context.cell()) {
-      router_.send(context, *notice, ownConnector);
+      recordFailure(router_.send(context, *notice, ownConnector));
     } else if (!router_.firstCopy(*notice)) {
       return;
     } else if (const auto direction = geometry::directionOfOffset(notice->cell - context.cell())) {
@@ -63,7 +63,7 @@ void GradientProgram::spread(program::ModuleContext& context, const Cell& cell, 
       if ((latched & (1u << k)) && context.cellBehind(k) == around) connector = k;
     }
     if (connector >= 0) {
-      context.send(connector, program::Message::of(DistanceMsg{cell, distance}));
+      recordFailure(context.send(connector, program::Message::of(DistanceMsg{cell, distance})));
     } else {
       DistanceNotice notice;
       notice.target = around;
@@ -71,7 +71,7 @@ void GradientProgram::spread(program::ModuleContext& context, const Cell& cell, 
       notice.request = nextNotice_++;
       notice.cell = cell;
       notice.distance = distance;
-      router_.send(context, notice);
+      recordFailure(router_.send(context, notice));
     }
   }
 }

@@ -13,6 +13,9 @@
 
 #include <array>
 #include <climits>
+#include <memory>
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -57,12 +60,23 @@ class GradientProgram : public program::ModuleProgram {
   int32_t distanceOf(program::ModuleContext& context, const geometry::Cell& cell) const;
   // The cells this module knows a distance for.
   std::vector<std::pair<geometry::Cell, int32_t>> knownDistances(const geometry::Cell& self) const;
+  // Why this module's program gave up (a refused message, compression or motion), if it did.
+  std::optional<std::string> failure() const {
+    return failure_ ? std::optional<std::string>(*failure_) : std::nullopt;
+  }
 
  protected:
   bool isMobile(const program::ModuleContext& context) const {
     return context.id() == parameters_.mobile;
   }
   const GradientParameters& parameters() const { return parameters_; }
+  // Keeps the first reason this module gave up; a status that is ok changes nothing.
+  void recordFailure(const std::string& why) {
+    if (!failure_) failure_ = std::make_unique<std::string>(why);
+  }
+  void recordFailure(const Status& status) {
+    if (!status.ok()) recordFailure(status.error());
+  }
 
   Router router_;
   uint32_t nextNotice_ = 1;  // numbers this module's routed notices, for the router's dedup
@@ -75,6 +89,8 @@ class GradientProgram : public program::ModuleProgram {
   void learn(program::ModuleContext& context, int direction, int32_t distance);
 
   GradientParameters parameters_;
+  // Allocated only when the program gives up: most modules never do, and idle state stays small.
+  std::unique_ptr<std::string> failure_;
   std::array<int32_t, 12> distances_{kUnknown, kUnknown, kUnknown, kUnknown, kUnknown, kUnknown,
                                      kUnknown, kUnknown, kUnknown, kUnknown, kUnknown, kUnknown};
 };

@@ -14,7 +14,10 @@ namespace {
 template <typename Program>
 class TypedPrograms final : public ProgramSet {
  public:
-  explicit TypedPrograms(const GradientParameters& parameters) : parameters_(parameters) {}
+  TypedPrograms(const GradientParameters& parameters, size_t moduleCount)
+      : parameters_(parameters) {
+    made_.reserve(moduleCount);
+  }
 
   std::unique_ptr<program::ModuleProgram> make(ModuleId id) override {
     auto program = std::make_unique<Program>(parameters_);
@@ -39,19 +42,23 @@ class TypedPrograms final : public ProgramSet {
     if constexpr (std::is_same_v<Program, FollowGradientProgram>) {
       MobileOutcome outcome;
       for (const auto& [id, program] : made_) {
-        if (id == parameters_.mobile) {
-          outcome.path = program->path();
-          outcome.arrived = program->arrived();
-          outcome.failure = program->failure();
-          outcome.wait = program->describeWait();
-        } else if (program->failure() && !outcome.helperFailure) {
-          outcome.helperFailure = {id, *program->failure()};
-        }
+        if (id != parameters_.mobile) continue;
+        outcome.path = program->path();
+        outcome.arrived = program->arrived();
+        outcome.failure = program->failure();
+        outcome.wait = program->describeWait();
       }
       return outcome;
     } else {
       return std::nullopt;
     }
+  }
+
+  std::optional<std::pair<ModuleId, std::string>> failure() const override {
+    for (const auto& [id, program] : made_) {
+      if (id != parameters_.mobile && program->failure()) return std::pair{id, *program->failure()};
+    }
+    return std::nullopt;
   }
 
  private:
@@ -60,13 +67,13 @@ class TypedPrograms final : public ProgramSet {
 };
 
 template <typename Program>
-std::unique_ptr<ProgramSet> make(const GradientParameters& parameters) {
-  return std::make_unique<TypedPrograms<Program>>(parameters);
+std::unique_ptr<ProgramSet> make(const GradientParameters& parameters, size_t moduleCount) {
+  return std::make_unique<TypedPrograms<Program>>(parameters, moduleCount);
 }
 
 struct Entry {
   ProgramInfo info;
-  std::unique_ptr<ProgramSet> (*make)(const GradientParameters&);
+  std::unique_ptr<ProgramSet> (*make)(const GradientParameters&, size_t);
 };
 
 const std::array kEntries = {
@@ -105,9 +112,10 @@ Result<ProgramInfo> programInfo(std::string_view name) {
 }
 
 Result<std::unique_ptr<ProgramSet>> makePrograms(std::string_view name,
-                                                 const GradientParameters& parameters) {
+                                                 const GradientParameters& parameters,
+                                                 size_t moduleCount) {
   for (const Entry& entry : kEntries) {
-    if (entry.info.name == name) return entry.make(parameters);
+    if (entry.info.name == name) return entry.make(parameters, moduleCount);
   }
   return Error{programInfo(name).error()};
 }

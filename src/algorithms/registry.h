@@ -41,8 +41,6 @@ struct MobileOutcome {
   bool arrived = false;
   std::optional<std::string> failure;  // why the mobile stopped
   std::string wait;                    // what it waited for when the run ended
-  // A helper module's failure (a refused compression, say): as much a failed run.
-  std::optional<std::pair<ModuleId, std::string>> helperFailure;
 };
 
 // The programs of one run: makes each module's program and keeps a typed handle on it, so that
@@ -64,9 +62,15 @@ class ProgramSet {
       const std::function<geometry::Cell(ModuleId)>& cellOf) const = 0;
   // The mobile's walk, for programs where it walks.
   virtual std::optional<MobileOutcome> mobile() const = 0;
+  // The first module other than the mobile whose program gave up (a refused compression, say),
+  // in increasing id order, with its reason: as much a failed run as a stuck mobile.
+  virtual std::optional<std::pair<ModuleId, std::string>> failure() const = 0;
 };
 
+// The programs of a named algorithm for a world of `moduleCount` modules; refuses an unknown
+// name, listing the known ones.
 Result<std::unique_ptr<ProgramSet>> makePrograms(std::string_view name,
-                                                 const GradientParameters& parameters);
+                                                 const GradientParameters& parameters,
+                                                 size_t moduleCount);
 
 }  // namespace datomsim::algorithms

@@ -50,15 +50,17 @@ class Router {
  public:
   static constexpr int8_t kFloodHops = 8;
 
-  // Sends towards routed.target from this module, choosing the next hop.
+  // Sends towards routed.target from this module, choosing the next hop. Hops go through
+  // connectors latched at the time, so a refusal is a bug of the caller's world: the first one is
+  // returned.
   template <typename T>
-  void send(program::ModuleContext& context, T routed, int arrivedThrough = -1) {
-    forward(context, routed, kindOf<T>(), arrivedThrough,
-            [&](int connector, const RoutedMsg& next) {
-              T copy = routed;
-              static_cast<RoutedMsg&>(copy) = next;
-              return context.send(connector, program::Message::of(copy));
-            });
+  Status send(program::ModuleContext& context, T routed, int arrivedThrough = -1) {
+    return forward(context, routed, kindOf<T>(), arrivedThrough,
+                   [&](int connector, const RoutedMsg& next) {
+                     T copy = routed;
+                     static_cast<RoutedMsg&>(copy) = next;
+                     return context.send(connector, program::Message::of(copy));
+                   });
   }
 
   // At the target: whether this copy is the first to arrive, the one to handle. A flood reaches
@@ -79,8 +81,8 @@ class Router {
   }
 
   template <typename Send>
-  void forward(program::ModuleContext& context, const RoutedMsg& routed, uint64_t kind,
-               int arrivedThrough, Send&& sendThrough);
+  Status forward(program::ModuleContext& context, const RoutedMsg& routed, uint64_t kind,
+                 int arrivedThrough, Send&& sendThrough);
 
   // Whether this module met the message before; remembers it if not.
   bool seen(const RoutedMsg& routed, uint64_t kind);

@@ -42,8 +42,8 @@ inline bool Router::seen(const RoutedMsg& routed, uint64_t kind) {
 }
 
 template <typename Send>
-void Router::forward(program::ModuleContext& context, const RoutedMsg& routed, uint64_t kind,
-                     int arrivedThrough, Send&& sendThrough) {
+Status Router::forward(program::ModuleContext& context, const RoutedMsg& routed, uint64_t kind,
+                       int arrivedThrough, Send&& sendThrough) {
   const uint16_t latched = context.latchedConnectors();
   const int64_t own = squaredDistance4(context.cell(), routed.target);
   if (!routed.flooding()) {
@@ -58,10 +58,7 @@ void Router::forward(program::ModuleContext& context, const RoutedMsg& routed, u
         best = connector;
       }
     }
-    if (best >= 0) {
-      sendThrough(best, routed);
-      return;
-    }
+    if (best >= 0) return sendThrough(best, routed);
   }
   // No neighbour is nearer: flood, each module forwarding once, within the hop limit and the
   // ball around the target.
@@ -70,10 +67,11 @@ void Router::forward(program::ModuleContext& context, const RoutedMsg& routed, u
     next.floodBound = floodBoundAround(own);
     next.hopsLeft = kFloodHops;
   }
-  if (routed.flooding() && seen(routed, kind)) return;
+  if (routed.flooding() && seen(routed, kind)) return Ok{};
   if (!routed.flooding()) seen(next, kind);
-  if (next.hopsLeft <= 0) return;
+  if (next.hopsLeft <= 0) return Ok{};
   --next.hopsLeft;
+  Status first = Ok{};
   for (int connector = 0; connector < geometry::kDirectionCount; ++connector) {
     // Back where it came from only when the flood starts here: the greedy sender has not
     // flooded it, and may be the only way round.
@@ -81,8 +79,10 @@ void Router::forward(program::ModuleContext& context, const RoutedMsg& routed, u
       continue;
     }
     if (squaredDistance4(context.cellBehind(connector), routed.target) > next.floodBound) continue;
-    sendThrough(connector, next);
+    Status sent = sendThrough(connector, next);
+    if (first.ok() && !sent.ok()) first = std::move(sent);
   }
+  return first;
 }
 
 }  // namespace datomsim::algorithms

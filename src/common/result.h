@@ -12,8 +12,9 @@ struct Error {
   std::string message;
 };
 
+// [[nodiscard]]: a result cannot be dropped by accident; a caller handles it or says why not.
 template <typename T>
-class Result {
+class [[nodiscard]] Result {
  public:
   Result(T value) : state_(std::move(value)) {}      // NOLINT(google-explicit-constructor)
   Result(Error error) : state_(std::move(error)) {}  // NOLINT(google-explicit-constructor)

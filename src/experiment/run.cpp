@@ -13,14 +13,14 @@ using geometry::toString;
 
 namespace {
 
-constexpr world::Color kMobileGreen{64, 255, 64};
+constexpr Color kMobileGreen{64, 255, 64};
 
 // Puts the mobile where the request says and returns its id.
-Result<world::ModuleId> placeMobile(world::World& world, const RunRequest& request) {
+Result<ModuleId> placeMobile(world::World& world, const RunRequest& request) {
   const Cell home = request.start.value_or(request.goal);
   if (const world::Module* atStart = world.moduleAt(home)) return atStart->id;
   if (const world::Module* atGoal = world.moduleAt(request.goal)) {
-    const world::ModuleId id = atGoal->id;
+    const ModuleId id = atGoal->id;
     const Status moved = world.move(id, home);
     if (!moved.ok()) return Error{"cannot move the mobile to the start: " + moved.error()};
     return id;
@@ -67,7 +67,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   }
   world.latchAllNeighbours();
 
-  auto programs = algorithms::makePrograms(request.program, {request.goal, *mobile});
+  auto programs = algorithms::makePrograms(request.program, {request.goal, *mobile}, world.size());
   if (!programs.ok()) return Error{programs.error()};
 
   sim::SimulationOptions options = request.simulation;
@@ -93,11 +93,10 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   const world::World& ended = simulator.world();
   result.distances = (*programs)->distances([&](ModuleId id) { return ended.find(id)->cell; });
 
+  if (const auto failed = (*programs)->failure()) {
+    return Error{fmt::format("module {} failed: {}", failed->first.value, failed->second)};
+  }
   if (const auto walk = (*programs)->mobile()) {
-    if (walk->helperFailure) {
-      return Error{fmt::format("module {} failed: {}", walk->helperFailure->first.value,
-                               walk->helperFailure->second)};
-    }
     if (walk->failure) return Error{"the mobile stopped: " + *walk->failure};
     if (!walk->arrived) {
       return Error{fmt::format("the mobile did not reach the goal {}: {}", toString(request.goal),

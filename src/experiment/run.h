@@ -31,7 +31,7 @@ struct RunRequest {
 };
 
 struct RunResult {
-  world::ModuleId mobile;
+  ModuleId mobile;
   // gradient: every reachable cell and its distance, sorted by x, then y, then z.
   std::vector<std::pair<geometry::Cell, int>> distances;
   // follow-gradient: the mobile's cells from start to goal.

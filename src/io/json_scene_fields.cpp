@@ -246,7 +246,7 @@ bool SceneHandler::moduleField() {
   if (key_ == "id") {
     const auto id = integerIn(v, 1, std::numeric_limits<uint32_t>::max());
     if (!id) return fail(path(), "expected an integer 1..4294967295, got " + brief(v));
-    module.id = world::ModuleId{uint32_t(*id)};
+    module.id = ModuleId{uint32_t(*id)};
     module_.explicitId = true;
   } else if (key_ == "cell") {
     const auto cell = threeIntegers(v, kInt32Min, kInt32Max);
@@ -259,7 +259,7 @@ bool SceneHandler::moduleField() {
   } else if (key_ == "color") {
     const auto color = threeIntegers(v, 0, 255);
     if (!color) return fail(path(), "expected three integers 0..255, got " + brief(v));
-    module.color = world::Color{uint8_t((*color)[0]), uint8_t((*color)[1]), uint8_t((*color)[2])};
+    module.color = Color{uint8_t((*color)[0]), uint8_t((*color)[1]), uint8_t((*color)[2])};
   }
   return true;
 }
@@ -267,7 +267,7 @@ bool SceneHandler::moduleField() {
 bool SceneHandler::finishModule() {
   if (!has(moduleSeen_, kModuleKeys, "cell")) return fail(modulePath(), "missing \"cell\"");
   // Like the XML's blocks, a module without an id gets its place in the list.
-  if (!module_.explicitId) module_.module.id = world::ModuleId{uint32_t(pending_.size() + 1)};
+  if (!module_.explicitId) module_.module.id = ModuleId{uint32_t(pending_.size() + 1)};
   pending_.push_back(module_);
   return true;
 }

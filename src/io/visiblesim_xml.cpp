@@ -22,7 +22,7 @@ using tinyxml2::XMLError;
 
 namespace {
 
-constexpr world::Color kDefaultColor{128, 128, 128};
+constexpr Color kDefaultColor{128, 128, 128};
 
 // Attribute texts -> values. Each returns nullopt when the text breaks the rule the caller names.
 
@@ -43,13 +43,13 @@ std::optional<Cell> parseGridSize(const char* text) {
   return cell;
 }
 
-std::optional<world::Color> parseColor(const char* text) {
+std::optional<Color> parseColor(const char* text) {
   const auto values = parseIntegerList(text);
   if (!values || values->size() != 3) return std::nullopt;
   for (const int64_t v : *values) {
     if (v < 0 || v > 255) return std::nullopt;
   }
-  return world::Color{uint8_t((*values)[0]), uint8_t((*values)[1]), uint8_t((*values)[2])};
+  return Color{uint8_t((*values)[0]), uint8_t((*values)[1]), uint8_t((*values)[2])};
 }
 
 std::optional<geometry::Orientation> parseOrientation(const char* text) {
@@ -209,7 +209,7 @@ class XmlSceneReader {
   }
 
   Status readBlocks(const XMLElement& blockList, Scene& scene) {
-    world::Color defaultColor = kDefaultColor;
+    Color defaultColor = kDefaultColor;
     if (const char* text = blockList.Attribute("blockSize")) {
       const auto size = parseBlockSize(text);
       if (!size) {
@@ -254,11 +254,11 @@ class XmlSceneReader {
         module.orientation = *orientation;
       }
       const char* idText = block->Attribute("id");
-      module.id = world::ModuleId{placeInFile};
+      module.id = ModuleId{placeInFile};
       if (idText) {
         const auto id = parseId(idText);
         if (!id) return attributeError(block, "id", idText, "must be an integer 1..4294967295");
-        module.id = world::ModuleId{*id};
+        module.id = ModuleId{*id};
       }
 
       // Check what World::add would refuse, to name the lines involved.
@@ -342,7 +342,7 @@ Status checkWritable(const Scene& scene) {
   return Ok{};
 }
 
-std::string colorText(const world::Color& color) {
+std::string colorText(const Color& color) {
   return fmt::format("{},{},{}", color.r, color.g, color.b);
 }
 

@@ -14,7 +14,6 @@ namespace datomsim::motion {
 using geometry::Cell;
 using world::CellState;
 using world::Module;
-using world::ModuleId;
 using world::World;
 
 std::string_view toString(RuleSet rules) {

@@ -23,7 +23,7 @@ namespace datomsim::motion {
 // In every case the mobile never counts as a hold for a deforming module.
 struct Mobile {
   geometry::Cell cell;
-  std::optional<world::ModuleId> module;
+  std::optional<ModuleId> module;
 };
 
 // The module at `cell` as the rules see it: nullptr when empty or when it is the mobile.
@@ -55,6 +55,6 @@ std::vector<Motion> validMotions(const world::World& world, const RuleTable& tab
 // True when the module holds to a module other than `mobile` through a latched connector that
 // the piston along world axis `axis` does not move.
 bool staysAttached(const world::World& world, const world::Module& module, int axis,
-                   std::optional<world::ModuleId> mobile);
+                   std::optional<ModuleId> mobile);
 
 }  // namespace datomsim::motion

@@ -61,7 +61,8 @@ std::optional<world::Module> takeMobile(world::World& world, const Cell& cell) {
   const world::Module* module = world.moduleAt(cell);
   if (!module) return std::nullopt;
   world::Module mobile = *module;
-  world.remove(mobile.id);
+  // The module is in the world, so its removal is never refused.
+  if (!world.remove(mobile.id).ok()) return std::nullopt;
   return mobile;
 }
 

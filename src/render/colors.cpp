@@ -9,8 +9,6 @@ namespace datomsim::render {
 
 namespace {
 
-using world::Color;
-
 // Paper, figure "gradient" caption. Green is not the pure (0,255,0) so that it stays apart from
 // cyan and yellow; pink is hot pink so that it stays apart from salmon and white.
 constexpr std::array<Color, kPaperDistanceCount> kPaperColors = {{

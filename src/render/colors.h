@@ -20,7 +20,7 @@ inline constexpr int kDarkRampEnd = 25;
 //   10..kDarkRampEnd a ramp from violet to a dark navy, the same from kDarkRampEnd on. The pictures
 //   print the number on every square from 10 on, since neighbouring ramp colours look alike.
 // Negative distances have no meaning; they get black.
-world::Color distanceColor(int distance);
+Color distanceColor(int distance);
 
 // True when a square of this distance carries its number (distanceColor's dark ramp).
 constexpr bool isLabelledDistance(int distance) {
@@ -28,7 +28,7 @@ constexpr bool isLabelledDistance(int distance) {
 }
 
 // Colour of the path line and of its markers.
-inline constexpr world::Color kPathColor{220, 0, 0};
+inline constexpr Color kPathColor{220, 0, 0};
 
 // How much lighter each layer above the lowest one of the picture is drawn (fraction of the way
 // to white), and the most any layer is lightened.
@@ -37,9 +37,9 @@ inline constexpr double kMaxLighten = 0.72;
 
 // The fill of a module `layersAboveLowest` layers above the lowest layer of the picture: its own
 // colour on the lowest layer, lighter higher up, so that layers read at a glance from the top.
-world::Color moduleFillColor(world::Color color, int layersAboveLowest);
+Color moduleFillColor(Color color, int layersAboveLowest);
 
 // The outline of a module disc: its fill colour darkened.
-world::Color moduleOutlineColor(world::Color fill);
+Color moduleOutlineColor(Color fill);
 
 }  // namespace datomsim::render

@@ -17,7 +17,6 @@ namespace datomsim::render::detail {
 namespace {
 
 using geometry::Cell;
-using world::Color;
 using world::Module;
 
 // Sizes in lattice spacings.

@@ -8,7 +8,7 @@ namespace datomsim::scene {
 
 using geometry::Cell;
 
-Status addBox(world::World& world, const Cell& size, const Cell& origin, world::Color color,
+Status addBox(world::World& world, const Cell& size, const Cell& origin, Color color,
               geometry::Orientation orientation) {
   if (size.x <= 0 || size.y <= 0 || size.z <= 0) {
     return Error{"box size " + geometry::toString(size) + " must be three positive integers"};
@@ -32,7 +32,7 @@ Status addBox(world::World& world, const Cell& size, const Cell& origin, world::
   for (int32_t z = 0; z < size.z; ++z) {
     for (int32_t y = 0; y < size.y; ++y) {
       for (int32_t x = 0; x < size.x; ++x) {
-        module.id = world::ModuleId{id++};
+        module.id = ModuleId{id++};
         module.cell = Cell{origin.x + x, origin.y + y, origin.z + z};
         if (Status added = world.add(module); !added) return added;
       }

@@ -17,7 +17,7 @@ namespace datomsim::scene {
 struct BoxOptions {
   // The box's corner cell of smallest coordinates.
   geometry::Cell origin{0, 0, 0};
-  world::Color color{};
+  Color color{};
   geometry::Orientation orientation{};
   // The world's grid; none leaves only the ground as bound.
   std::optional<geometry::Cell> gridSize{};
@@ -26,7 +26,7 @@ struct BoxOptions {
 // Adds a box of size X,Y,Z (all positive) to a world, with ids from world.nextFreeId() on. Refuses
 // a cell that World::add refuses (outside, occupied), leaving the modules added so far.
 Status addBox(world::World& world, const geometry::Cell& size, const geometry::Cell& origin,
-              world::Color color = {}, geometry::Orientation orientation = {});
+              Color color = {}, geometry::Orientation orientation = {});
 
 // A world holding one box, ids from 1, all neighbours latched.
 Result<world::World> box(const geometry::Cell& size, const BoxOptions& options = {});

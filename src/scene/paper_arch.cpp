@@ -11,11 +11,11 @@ using geometry::Cell;
 
 namespace {
 
-constexpr world::Color kMobileColor{64, 255, 64};
+constexpr Color kMobileColor{64, 255, 64};
 constexpr int kMobileOrientation = 9;
-constexpr world::Color kBoxColor{128, 128, 64};
-constexpr world::Color kArchColor{96, 96, 96};
-constexpr world::Color kHoleFillerColor{64, 255, 255};
+constexpr Color kBoxColor{128, 128, 64};
+constexpr Color kArchColor{96, 96, 96};
+constexpr Color kHoleFillerColor{64, 255, 255};
 
 // The obstacle over the box, in the reference files' order (read from paper-arch-hole2.xml). Two
 // feet stand on the box's top layer: cells x 3..5, y 1..3 and x 1..2, y 4..5 at z = 2. They rise

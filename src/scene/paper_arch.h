@@ -19,7 +19,7 @@ inline constexpr geometry::Cell kPaperGoal{6, 5, 2};
 // Where the mobile starts in the follow-gradient run (DOMAIN section 7).
 inline constexpr geometry::Cell kPaperStart{0, 0, 2};
 inline constexpr geometry::Cell kPaperGridSize{11, 11, 11};
-inline constexpr world::ModuleId kPaperMobile{1};
+inline constexpr ModuleId kPaperMobile{1};
 
 // The paper's scene with an arch hole `holeHeight` Datoms high: 2 (figure "gradient" (a)) or 1
 // (variant (b)). Refuses any other height. All neighbours are latched.

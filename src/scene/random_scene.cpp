@@ -66,7 +66,7 @@ Result<world::World> random(uint64_t seed, size_t count, const RandomOptions& op
     frontier.pop_back();
     inFrontier.erase(world::packCell(module.cell));
 
-    module.id = world::ModuleId{id};
+    module.id = ModuleId{id};
     if (options.randomOrientations) {
       module.orientation = *geometry::Orientation::fromCode(int(rng.below(24)));
     }

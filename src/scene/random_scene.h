@@ -27,7 +27,7 @@ struct RandomOptions {
   std::optional<geometry::Cell> start{};
   // Modules use layers z = 0 .. maxHeight - 1.
   int32_t maxHeight = 3;
-  world::Color color{};
+  Color color{};
   // Draw each module's orientation (0..23) instead of leaving 0.
   bool randomOrientations = false;
 };

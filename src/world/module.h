@@ -14,9 +14,6 @@
 
 namespace datomsim::world {
 
-using datomsim::Color;
-using datomsim::ModuleId;
-
 struct Module {
   ModuleId id;
   geometry::Cell cell;

@@ -102,7 +102,9 @@ Status World::remove(ModuleId id) {
   const size_t index = slotOf(id);
   if (index == kNotFound) return Error{"no module " + std::to_string(id.value)};
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
-    if (neighbour(modules_[index], d)) setLatched(id, d, false);
+    if (const auto pair = facingPair(modules_[index], d)) {
+      writeLatch(index, pair->connectorA, slotOf(pair->b), pair->connectorB, false);
+    }
   }
   occupancy_.erase(modules_[index].cell);
   eraseIndex(id);
@@ -187,8 +189,13 @@ Status World::setLatched(const LatchPair& pair, bool latched) {
       return Error{"no connector " + std::to_string(connector)};
     }
   }
-  const auto bitA = uint16_t(1u << pair.connectorA);
-  const auto bitB = uint16_t(1u << pair.connectorB);
+  writeLatch(a, pair.connectorA, b, pair.connectorB, latched);
+  return Ok{};
+}
+
+void World::writeLatch(size_t a, int connectorA, size_t b, int connectorB, bool latched) {
+  const auto bitA = uint16_t(1u << connectorA);
+  const auto bitB = uint16_t(1u << connectorB);
   if (latched) {
     modules_[a].latches |= bitA;
     modules_[b].latches |= bitB;
@@ -196,7 +203,6 @@ Status World::setLatched(const LatchPair& pair, bool latched) {
     modules_[a].latches &= uint16_t(~bitA);
     modules_[b].latches &= uint16_t(~bitB);
   }
-  return Ok{};
 }
 
 bool World::isLatched(const Module& module, int direction) const {

@@ -97,6 +97,8 @@ class World {
 
  private:
   size_t slotOf(ModuleId id) const;
+  // Sets or clears the latch bits of two modules by their slots, unchecked.
+  void writeLatch(size_t a, int connectorA, size_t b, int connectorB, bool latched);
   void setIndex(ModuleId id, uint32_t index);
   void eraseIndex(ModuleId id);
 

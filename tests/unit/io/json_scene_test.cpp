@@ -14,9 +14,9 @@ namespace {
 using geometry::Cell;
 using testing::sameScene;
 
-world::Module makeModule(uint32_t id, Cell cell, int orientation = 0, world::Color color = {}) {
+world::Module makeModule(uint32_t id, Cell cell, int orientation = 0, Color color = {}) {
   world::Module module;
-  module.id = world::ModuleId{id};
+  module.id = ModuleId{id};
   module.cell = cell;
   module.orientation = *geometry::Orientation::fromCode(orientation);
   module.color = color;
@@ -119,10 +119,10 @@ TEST(JsonScene, GivesModulesWithoutIdTheirPlaceAndDefaults) {
       withModules("{\"cell\":[1,1,0]},{\"id\":9,\"cell\":[2,1,0]},{\"cell\":[3,1,0]}"), "box.json");
   ASSERT_TRUE(scene.ok()) << scene.error();
   const auto modules = scene->world.modules();
-  EXPECT_EQ(modules[0].id, world::ModuleId{1});
-  EXPECT_EQ(modules[1].id, world::ModuleId{9});
-  EXPECT_EQ(modules[2].id, world::ModuleId{3});
-  EXPECT_EQ(modules[0].color, (world::Color{128, 128, 128}));
+  EXPECT_EQ(modules[0].id, ModuleId{1});
+  EXPECT_EQ(modules[1].id, ModuleId{9});
+  EXPECT_EQ(modules[2].id, ModuleId{3});
+  EXPECT_EQ(modules[0].color, (Color{128, 128, 128}));
   EXPECT_EQ(modules[0].orientation.code(), 0);
   EXPECT_EQ(scene->blockSize, kDefaultBlockSize);
 }

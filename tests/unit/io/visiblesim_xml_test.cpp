@@ -49,11 +49,11 @@ TEST(VisibleSimXml, ReadsBlocksWithIdsInFileOrder) {
   ASSERT_TRUE(scene.ok()) << scene.error();
   const auto modules = scene->world.modules();
   ASSERT_EQ(modules.size(), 4u);
-  EXPECT_EQ(modules[0].id, world::ModuleId{1});
+  EXPECT_EQ(modules[0].id, ModuleId{1});
   EXPECT_EQ(modules[0].cell, (Cell{6, 5, 2}));
   EXPECT_EQ(modules[0].orientation.code(), 9);
-  EXPECT_EQ(modules[0].color, (world::Color{64, 255, 64}));
-  EXPECT_EQ(modules[3].id, world::ModuleId{4});
+  EXPECT_EQ(modules[0].color, (Color{64, 255, 64}));
+  EXPECT_EQ(modules[3].id, ModuleId{4});
   EXPECT_EQ(modules[3].cell, (Cell{1, 2, 0}));
   EXPECT_EQ(scene->world.bounds().gridSize, (Cell{11, 11, 11}));
   EXPECT_EQ(scene->blockSize, (std::array<double, 3>{10, 10, 10}));
@@ -63,7 +63,7 @@ TEST(VisibleSimXml, DefaultsToGreyAndOrientationZero) {
   const auto scene = parseVisibleSimXml(kSmallScene, "small.xml");
   ASSERT_TRUE(scene.ok()) << scene.error();
   EXPECT_EQ(scene->world.modules()[2].orientation.code(), 0);
-  EXPECT_EQ(scene->world.modules()[3].color, (world::Color{128, 128, 128}));
+  EXPECT_EQ(scene->world.modules()[3].color, (Color{128, 128, 128}));
 }
 
 TEST(VisibleSimXml, UsesTheBlockListColorForBlocksWithout) {
@@ -72,8 +72,8 @@ TEST(VisibleSimXml, UsesTheBlockListColorForBlocksWithout) {
                     " color=\"200,100,0\""),
       "scene.xml");
   ASSERT_TRUE(scene.ok()) << scene.error();
-  EXPECT_EQ(scene->world.modules()[0].color, (world::Color{200, 100, 0}));
-  EXPECT_EQ(scene->world.modules()[1].color, (world::Color{1, 2, 3}));
+  EXPECT_EQ(scene->world.modules()[0].color, (Color{200, 100, 0}));
+  EXPECT_EQ(scene->world.modules()[1].color, (Color{1, 2, 3}));
 }
 
 TEST(VisibleSimXml, KeepsViewerSettingsInFileOrder) {
@@ -102,8 +102,8 @@ TEST(VisibleSimXml, UsesIdAttributesWhenPresent) {
       xmlWithBlocks("<block id=\"7\" position=\"1,1,0\"/>\n<block position=\"2,1,0\"/>\n"),
       "scene.xml");
   ASSERT_TRUE(scene.ok()) << scene.error();
-  EXPECT_EQ(scene->world.modules()[0].id, world::ModuleId{7});
-  EXPECT_EQ(scene->world.modules()[1].id, world::ModuleId{2});
+  EXPECT_EQ(scene->world.modules()[0].id, ModuleId{7});
+  EXPECT_EQ(scene->world.modules()[1].id, ModuleId{2});
 }
 
 TEST(VisibleSimXml, IgnoresUnknownElementsAndAttributes) {
@@ -257,7 +257,7 @@ TEST(VisibleSimXml, WritesVisibleSimsLayout) {
 TEST(VisibleSimXml, WritesIdsOnlyWhenTheyAreNotTheFileOrder) {
   Scene scene;
   world::Module module;
-  module.id = world::ModuleId{3};
+  module.id = ModuleId{3};
   ASSERT_TRUE(scene.world.add(module).ok());
   const auto xml = toVisibleSimXml(scene);
   ASSERT_TRUE(xml.ok()) << xml.error();
@@ -274,10 +274,10 @@ TEST(VisibleSimXml, RoundTripKeepsEverything) {
   scene.visibleSim.camera = AttributeList{{"target", "1,2,3"}};
   for (uint32_t i = 0; i < 5; ++i) {
     world::Module module;
-    module.id = world::ModuleId{10 - i};
+    module.id = ModuleId{10 - i};
     module.cell = Cell{int32_t(i), 2, int32_t(i % 2)};
     module.orientation = *geometry::Orientation::fromCode(int(i * 5));
-    module.color = world::Color{uint8_t(i), 255, 0};
+    module.color = Color{uint8_t(i), 255, 0};
     ASSERT_TRUE(scene.world.add(module).ok());
   }
   const auto xml = toVisibleSimXml(scene);
@@ -307,7 +307,7 @@ TEST(VisibleSimXml, ReadsThePapersScene) {
   EXPECT_EQ(scene->world.size(), 131u);
   EXPECT_EQ(scene->world.bounds().gridSize, (Cell{11, 11, 11}));
   const world::Module& mobile = scene->world.modules()[0];
-  EXPECT_EQ(mobile.id, world::ModuleId{1});
+  EXPECT_EQ(mobile.id, ModuleId{1});
   EXPECT_EQ(mobile.cell, (Cell{6, 5, 2}));
   EXPECT_EQ(mobile.orientation.code(), 9);
   ASSERT_TRUE(scene->visibleSim.camera);

@@ -61,7 +61,7 @@ TEST(Motion, RefusesWhenTheGoalIsOccupied) {
   const Refusal& refusal = std::get<Refusal>(result);
   EXPECT_EQ(refusal.reason, RefusalReason::kGoalOccupied);
   EXPECT_EQ(refusal.role, CellRole::kGoal);
-  EXPECT_EQ(refusal.blocker, world::ModuleId{2});
+  EXPECT_EQ(refusal.blocker, ModuleId{2});
   EXPECT_NE(describe(refusal).find("holds module 2"), std::string::npos);
 }
 
@@ -205,7 +205,7 @@ TEST(Motion, RefusesWhenTheMobileIsNotLatchedToThePivot) {
   const Rule& rule = ruleWith(Turn::kAhead);
   const Cell mobileCell = kPivot + rule.mobileOffset;
   world::World world = WorldBuilder().module(kPivot).module(mobileCell).build();
-  const world::ModuleId mobile = world.moduleAt(mobileCell)->id;
+  const ModuleId mobile = world.moduleAt(mobileCell)->id;
   ASSERT_TRUE(
       std::holds_alternative<Motion>(evaluate(world, rule, Mobile{mobileCell, mobile}, {})));
   ASSERT_TRUE(

@@ -8,8 +8,6 @@
 namespace datomsim::render {
 namespace {
 
-using world::Color;
-
 std::tuple<int, int, int> rgb(Color c) {
   return {c.r, c.g, c.b};
 }

@@ -24,7 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using geometry::Cell;
-using world::Color;
 
 constexpr Color kOlive{128, 128, 64};
 constexpr Cell kGoal{6, 5, 2};
@@ -32,7 +31,7 @@ constexpr Cell kStart{0, 0, 2};
 
 world::Module moduleAt(uint32_t id, Cell cell, Color color) {
   world::Module module;
-  module.id = world::ModuleId{id};
+  module.id = ModuleId{id};
   module.cell = cell;
   module.color = color;
   return module;

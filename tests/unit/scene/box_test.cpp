@@ -27,20 +27,20 @@ TEST(Box, NumbersModulesXFastestThenYThenZ) {
   const auto world = box(Cell{3, 2, 2});
   ASSERT_TRUE(world.ok()) << world.error();
   const auto modules = world->modules();
-  EXPECT_EQ(modules[0].id, world::ModuleId{1});
+  EXPECT_EQ(modules[0].id, ModuleId{1});
   EXPECT_EQ(modules[0].cell, (Cell{0, 0, 0}));
   EXPECT_EQ(modules[1].cell, (Cell{1, 0, 0}));
   EXPECT_EQ(modules[3].cell, (Cell{0, 1, 0}));
   EXPECT_EQ(modules[6].cell, (Cell{0, 0, 1}));
-  EXPECT_EQ(modules[11].id, world::ModuleId{12});
+  EXPECT_EQ(modules[11].id, ModuleId{12});
 }
 
 TEST(Box, UsesTheColourOrientationAndGrid) {
-  const auto world = box(Cell{2, 2, 1}, {.color = world::Color{1, 2, 3},
+  const auto world = box(Cell{2, 2, 1}, {.color = Color{1, 2, 3},
                                          .orientation = *geometry::Orientation::fromCode(5),
                                          .gridSize = Cell{4, 4, 4}});
   ASSERT_TRUE(world.ok()) << world.error();
-  EXPECT_EQ(world->modules()[3].color, (world::Color{1, 2, 3}));
+  EXPECT_EQ(world->modules()[3].color, (Color{1, 2, 3}));
   EXPECT_EQ(world->modules()[3].orientation.code(), 5);
   EXPECT_EQ(world->bounds().gridSize, (Cell{4, 4, 4}));
 }
@@ -71,7 +71,7 @@ TEST(Box, AddsToAWorldWithTheNextIds) {
   world::World world;
   ASSERT_TRUE(addBox(world, Cell{2, 1, 1}, Cell{0, 0, 0}).ok());
   ASSERT_TRUE(addBox(world, Cell{2, 1, 1}, Cell{0, 1, 0}).ok());
-  EXPECT_EQ(world.modules()[2].id, world::ModuleId{3});
+  EXPECT_EQ(world.modules()[2].id, ModuleId{3});
   EXPECT_FALSE(addBox(world, Cell{1, 1, 1}, Cell{0, 0, 0}).ok());
 }
 

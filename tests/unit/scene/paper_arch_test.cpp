@@ -25,7 +25,7 @@ TEST(PaperArch, Has130ModulesOr131WithTheHoleFilled) {
   EXPECT_EQ(two->bounds().gridSize, kPaperGridSize);
   EXPECT_EQ(two->moduleAt(Cell{2, 3, 3}), nullptr);
   ASSERT_NE(one->moduleAt(Cell{2, 3, 3}), nullptr);
-  EXPECT_EQ(one->moduleAt(Cell{2, 3, 3})->color, (world::Color{64, 255, 255}));
+  EXPECT_EQ(one->moduleAt(Cell{2, 3, 3})->color, (Color{64, 255, 255}));
 }
 
 TEST(PaperArch, PutsTheMobileFirstAtTheGoal) {
@@ -35,7 +35,7 @@ TEST(PaperArch, PutsTheMobileFirstAtTheGoal) {
   EXPECT_EQ(mobile.id, kPaperMobile);
   EXPECT_EQ(mobile.cell, kPaperGoal);
   EXPECT_EQ(mobile.orientation.code(), 9);
-  EXPECT_EQ(mobile.color, (world::Color{64, 255, 64}));
+  EXPECT_EQ(mobile.color, (Color{64, 255, 64}));
   // The start cell of the run is free.
   EXPECT_EQ(world->moduleAt(kPaperStart), nullptr);
   EXPECT_TRUE(world->isInside(kPaperStart));

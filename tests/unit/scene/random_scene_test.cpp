@@ -53,7 +53,7 @@ TEST(RandomScene, HasTheCountAndIsConnected) {
   EXPECT_EQ(world->size(), 500u);
   EXPECT_EQ(connectedCount(*world), 500u);
   EXPECT_EQ(world->modules()[0].cell, (Cell{0, 0, 0}));
-  EXPECT_EQ(world->modules()[499].id, world::ModuleId{500});
+  EXPECT_EQ(world->modules()[499].id, ModuleId{500});
 }
 
 TEST(RandomScene, StaysLowInsideTheGridAndRestsOnSomething) {

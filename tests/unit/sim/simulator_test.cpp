@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "geometry/lattice.h"
+#include "support/scripted_program.h"
 #include "support/world_builder.h"
 
 namespace datomsim::sim {
@@ -13,46 +14,14 @@ namespace {
 using geometry::Cell;
 using program::Message;
 using program::ModuleContext;
+using testing::Script;
+using testing::scripts;
 using testing::WorldBuilder;
 
 struct Ping {
   static constexpr std::string_view kName = "Ping";
   int32_t hops;
 };
-
-// A program made of lambdas, so that each test states its behaviour in a few lines.
-struct Script {
-  std::function<void(ModuleContext&)> start = [](ModuleContext&) {};
-  std::function<void(ModuleContext&, int, const Message&)> message = [](ModuleContext&, int,
-                                                                        const Message&) {};
-  std::function<void(ModuleContext&, int)> timer = [](ModuleContext&, int) {};
-  std::function<void(ModuleContext&)> deformed = [](ModuleContext&) {};
-  std::function<void(ModuleContext&)> moved = [](ModuleContext&) {};
-};
-
-class ScriptedProgram : public program::ModuleProgram {
- public:
-  explicit ScriptedProgram(const Script* script) : script_(script) {}
-  void onStart(ModuleContext& c) override { script_->start(c); }
-  void onMessage(ModuleContext& c, int connector, const Message& m) override {
-    script_->message(c, connector, m);
-  }
-  void onTimer(ModuleContext& c, int tag) override { script_->timer(c, tag); }
-  void onDeformationDone(ModuleContext& c) override { script_->deformed(c); }
-  void onMotionDone(ModuleContext& c) override { script_->moved(c); }
-
- private:
-  const Script* script_;
-};
-
-// Every module runs the script of its id (or nothing).
-program::ProgramFactory scripts(std::map<uint32_t, Script>& byId) {
-  return [&byId](world::ModuleId id) -> std::unique_ptr<program::ModuleProgram> {
-    static const Script kIdle;
-    const auto found = byId.find(id.value);
-    return std::make_unique<ScriptedProgram>(found == byId.end() ? &kIdle : &found->second);
-  };
-}
 
 const motion::RuleTable& table() {
   static const motion::RuleTable kTable;
@@ -153,7 +122,7 @@ TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
   ASSERT_TRUE(status.ok()) << status.error();
   ASSERT_TRUE(started.ok()) << started.error();
   ASSERT_TRUE(done);
-  const world::Module& mobile = *simulator.world().find(world::ModuleId{2});
+  const world::Module& mobile = *simulator.world().find(ModuleId{2});
   EXPECT_EQ(mobile.cell, stage.pivot + stage.rule.goalOffset);
   // Go ahead: a half turn about R.
   const auto halfTurn = geometry::Orientation::quarterTurn(stage.rule.right);
@@ -186,7 +155,7 @@ TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
   ASSERT_TRUE(simulator.run().ok());
   ASSERT_FALSE(started.ok());
   EXPECT_NE(started.error().find("the goal"), std::string::npos) << started.error();
-  EXPECT_EQ(simulator.world().find(world::ModuleId{2})->cell, stage.mobile);
+  EXPECT_EQ(simulator.world().find(ModuleId{2})->cell, stage.mobile);
 }
 
 // The go-ahead rule with a module in cell C (def(R)) held by a support behind it.
@@ -243,7 +212,7 @@ TEST(Simulator, ReleasingWhileTheMobilePassesStopsTheRunWithAReport) {
   const Status status = simulator.run();
   ASSERT_FALSE(status.ok());
   ASSERT_TRUE(simulator.violation().has_value());
-  EXPECT_EQ(simulator.violation()->module, world::ModuleId{3});
+  EXPECT_EQ(simulator.violation()->module, ModuleId{3});
   EXPECT_NE(status.error().find("let go of its piston"), std::string::npos) << status.error();
   EXPECT_NE(status.error().find("event #"), std::string::npos);
 }

@@ -1,0 +1,92 @@
+// The folder tree is the architecture: docs/architecture.md's table is the law, and the includes
+// of src/ obey it.
+#include "layering.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/temporary_directory.h"
+
+namespace datomsim::testing {
+namespace {
+
+const std::filesystem::path kSource = DATOMSIM_SOURCE_DIR;
+
+std::map<std::string, Layer> projectLayers() {
+  return readLayerTable(readText(kSource / "docs" / "architecture.md"));
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  return text;
+}
+
+void writeFile(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+}
+
+TEST(Layering, TheTableNamesTheLayersAndWhatTheyUse) {
+  const auto layers = projectLayers();
+  ASSERT_GE(layers.size(), 14u);
+  EXPECT_EQ(layers.at("common").uses.size(), 0u);
+  EXPECT_EQ(layers.at("sim").uses, std::set<std::string>{"program"});
+  EXPECT_EQ(layers.at("program").never, std::set<std::string>{"world"});
+  for (const auto& [name, layer] : layers) {
+    for (const std::string& used : layer.uses) {
+      EXPECT_TRUE(layers.count(used)) << name << " uses " << used << ", which is not a layer";
+    }
+  }
+}
+
+TEST(Layering, EveryIncludeOfSrcObeysTheTable) {
+  const auto breaches = layeringBreaches(kSource / "src", projectLayers());
+  EXPECT_TRUE(breaches.empty()) << joined(breaches);
+}
+
+// The check itself, on a small tree: it must catch what it is there to catch.
+TEST(Layering, CatchesAnIncludeOfALayerAbove) {
+  TemporaryDirectory tree;
+  writeFile(tree.path() / "low" / "a.h", "#pragma once\n");
+  writeFile(tree.path() / "high" / "b.h", "#pragma once\n#include \"low/a.h\"\n");
+  writeFile(tree.path() / "low" / "c.cpp", "#include \"low/a.h\"\n\n#include \"high/b.h\"\n");
+  const auto layers = readLayerTable(
+      "| `low` | `l` | below | - | |\n"
+      "| `high` | `h` | above | low | |\n");
+  const auto breaches = layeringBreaches(tree.path(), layers);
+  ASSERT_EQ(breaches.size(), 1u) << joined(breaches);
+  EXPECT_NE(breaches[0].find("c.cpp:3 includes \"high/b.h\": layer low does not use high"),
+            std::string::npos)
+      << breaches[0];
+}
+
+TEST(Layering, CatchesALayerReachedThroughAChainItMustNeverSee) {
+  TemporaryDirectory tree;
+  writeFile(tree.path() / "world" / "world.h", "#pragma once\n");
+  writeFile(tree.path() / "motion" / "values.h", "#pragma once\n");
+  writeFile(tree.path() / "motion" / "motion.h", "#include \"world/world.h\"\n");
+  writeFile(tree.path() / "program" / "ok.h", "#include \"motion/values.h\"\n");
+  writeFile(tree.path() / "program" / "bad.h", "#include \"motion/motion.h\"\n");
+  const auto layers = readLayerTable(
+      "| `world` | `w` | state | - | |\n"
+      "| `motion` | `m` | rules | world | |\n"
+      "| `program` | `p` | values only | motion | world |\n");
+  const auto breaches = layeringBreaches(tree.path(), layers);
+  ASSERT_EQ(breaches.size(), 1u) << joined(breaches);
+  EXPECT_NE(breaches[0].find("bad.h reaches layer world"), std::string::npos) << breaches[0];
+  EXPECT_NE(breaches[0].find("-> motion/motion.h -> world/world.h"), std::string::npos)
+      << breaches[0];
+}
+
+TEST(Layering, CatchesAFolderThatIsNoLayer) {
+  TemporaryDirectory tree;
+  writeFile(tree.path() / "stray" / "x.h", "#pragma once\n");
+  const auto breaches = layeringBreaches(tree.path(), readLayerTable("| `low` | `l` | - | - |\n"));
+  ASSERT_EQ(breaches.size(), 1u) << joined(breaches);
+  EXPECT_NE(breaches[0].find("stray is not a layer of the table"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace datomsim::testing

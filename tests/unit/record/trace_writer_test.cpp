@@ -1,0 +1,100 @@
+#include "record/trace_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "geometry/lattice.h"
+#include "sim/simulator.h"
+#include "support/scripted_program.h"
+#include "support/world_builder.h"
+
+namespace datomsim::record {
+namespace {
+
+using geometry::Cell;
+using testing::Script;
+using testing::WorldBuilder;
+
+const motion::RuleTable& table() {
+  static const motion::RuleTable kTable;
+  return kTable;
+}
+
+std::vector<nlohmann::json> lines(const std::string& text) {
+  std::vector<nlohmann::json> out;
+  std::stringstream stream(text);
+  for (std::string line; std::getline(stream, line);) out.push_back(nlohmann::json::parse(line));
+  return out;
+}
+
+// A mobile goes ahead around a pivot in mid-air: the trace, subscribed like any recorder, has
+// every change the viewer replays, with the hinge worked out from the module's model.
+TEST(TraceWriter, RecordsAMotionAsTheSimulatorAnnouncesIt) {
+  const motion::Rule& rule = table().rule(2);  // direction 0, first piston, go ahead
+  const Cell pivot{5, 5, 5};
+  const Cell mobile = pivot + rule.mobileOffset;
+  std::map<uint32_t, Script> programs;
+  programs[2].start = [&](program::ModuleContext& c) {
+    for (const motion::Evaluation& e : c.motions()) {
+      const auto* m = std::get_if<motion::Motion>(&e);
+      if (m && m->rule == &rule) {
+        ASSERT_TRUE(c.move(*m).ok());
+      }
+    }
+  };
+  const world::World world = WorldBuilder().module(pivot).module(mobile).build();
+  TraceWriter trace;
+  trace.header(world, "one motion");
+  sim::Simulator simulator(world, table(), {});
+  simulator.subscribe(&trace);
+  simulator.install(testing::scripts(programs));
+  simulator.startAll();
+  ASSERT_TRUE(simulator.run().ok());
+
+  const auto records = lines(trace.text());
+  ASSERT_GE(records.size(), 2u);
+  EXPECT_EQ(records[0]["format"], "datomsim-trace");
+  std::vector<nlohmann::json> turns, pistons, places, latches, notes;
+  for (size_t i = 1; i < records.size(); ++i) {
+    if (records[i].contains("turn")) turns.push_back(records[i]["turn"]);
+    if (records[i].contains("piston")) pistons.push_back(records[i]);
+    if (records[i].contains("place")) places.push_back(records[i]["place"]);
+    if (records[i].contains("latch")) latches.push_back(records[i]["latch"]);
+    if (records[i].contains("note")) notes.push_back(records[i]["note"]);
+  }
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "module 2 turns ahead about pivot 1 (piston " + std::to_string(rule.up) +
+                          ") towards " + geometry::toString(pivot + rule.goalOffset));
+  // Two quarter turns of 90 degrees, the first about -R through the hinge on the -F side.
+  ASSERT_EQ(turns.size(), 2u);
+  const geometry::Vec3 hinge = trace.hinge(geometry::worldPosition(pivot, trace.spacing()), rule.up,
+                                           geometry::oppositeAxis(rule.front));
+  EXPECT_NEAR(turns[0]["centre"][0].get<double>(), hinge.x, 1e-5);
+  EXPECT_NEAR(turns[0]["centre"][1].get<double>(), hinge.y, 1e-5);
+  EXPECT_NEAR(turns[0]["centre"][2].get<double>(), hinge.z, 1e-5);
+  EXPECT_EQ(turns[0]["deg"], 90);
+  EXPECT_EQ(turns[0]["progress"].front(), 0);
+  EXPECT_EQ(turns[1]["progress"].back(), 1);
+  // Pivot and mobile compress over the first quarter turn and come back over the second.
+  ASSERT_EQ(pistons.size(), 4u);
+  EXPECT_EQ(pistons[0]["piston"]["to"], 1);
+  EXPECT_EQ(pistons[3]["piston"]["to"], 0);
+  EXPECT_EQ(pistons[3]["t"], 1);  // the second quarter turn starts after one second
+  // The mobile arrives at the goal; the hinge's new pair latched before the old one let go.
+  ASSERT_EQ(places.size(), 1u);
+  EXPECT_EQ(places[0]["m"], 2);
+  const Cell goal = pivot + rule.goalOffset;
+  EXPECT_EQ(places[0]["cell"], (std::vector<int>{goal.x, goal.y, goal.z}));
+  size_t on = latches.size(), off = latches.size();
+  for (size_t i = 0; i < latches.size(); ++i) {
+    if (latches[i]["on"] == true && on == latches.size()) on = i;
+    if (latches[i]["on"] == false) off = i;
+  }
+  ASSERT_LT(on, latches.size());
+  EXPECT_LT(on, off);
+}
+
+}  // namespace
+}  // namespace datomsim::record

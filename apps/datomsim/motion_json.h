@@ -4,7 +4,7 @@
 //          (distances sorted by x, then y, then z; "path":[[x,y,z],...] when a start is given)
 //   moves: {"at":[x,y,z],"moves":[{"pivot":[x,y,z],"piston":P,"turn":"left","goal":[x,y,z],
 //          "valid":true,"refusal":null,"deformations":[{"cell":[x,y,z],"pistons":[P,Q]}]}]}
-// Pistons are world axes (DOMAIN section 2). See docs/file-formats.md.
+// Pistons are world axes (docs/conventions.md, section 2). See docs/file-formats.md.
 #pragma once
 
 #include <string>

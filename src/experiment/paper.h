@@ -1,5 +1,5 @@
-// The paper's experiment (section VII; DOMAIN section 7) on its two arch scenes: the gradient
-// from G, the path from the start by following it, the same run in the simulator, and the
+// The paper's experiment (section VII; docs/conventions.md, section 7) on its two arch scenes: the
+// gradient from G, the path from the start by following it, the same run in the simulator, and the
 // observations the paper makes about them.
 #pragma once
 

@@ -1,4 +1,5 @@
-// Integer cell coordinates in the skew FCC lattice (DOMAIN section 1, VisibleSim's SkewFCCLattice).
+// Integer cell coordinates in the skew FCC lattice (docs/conventions.md, section 1; VisibleSim's
+// SkewFCCLattice).
 //
 // A Cell is a value type: an address in the lattice, whether or not a module sits there. Offsets
 // between cells are Cells too.

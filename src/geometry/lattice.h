@@ -1,6 +1,6 @@
 // The skew FCC lattice: cell positions, the 12 neighbour directions and the 6 piston axes.
 //
-// Two kinds of world direction appear everywhere (DOMAIN sections 1-2):
+// Two kinds of world direction appear everywhere (docs/conventions.md, sections 1-2):
 //   - a *direction* d in 0..11 points at one of the 12 neighbour cells; a module at orientation 0
 //     faces it with its connector d;
 //   - an *axis* a in 0..5 is one of the 6 piston directions, pointing at an octahedral hole; a
@@ -66,7 +66,7 @@ inline constexpr std::array<std::array<int, 3>, kAxisCount> kAxisInCubeFrame = {
 
 }  // namespace detail
 
-// Offset of the neighbour cell in direction d (DOMAIN section 1 table).
+// Offset of the neighbour cell in direction d (docs/conventions.md, section 1 table).
 constexpr Cell neighbourOffset(int direction) {
   return detail::kNeighbourOffsets[direction];
 }
@@ -84,7 +84,7 @@ constexpr std::optional<int> directionOfOffset(const Cell& offset) {
   return std::nullopt;
 }
 
-// Twice the piston vector of axis a, in skew cell units (DOMAIN section 2 table).
+// Twice the piston vector of axis a, in skew cell units (docs/conventions.md, section 2 table).
 constexpr Cell doubledAxis(int axis) {
   return detail::kDoubledAxes[axis];
 }
@@ -173,7 +173,7 @@ constexpr std::optional<int> directionOfAxes(int u, int v) {
 Vec3 directionVector(int direction);
 Vec3 axisVector(int axis);
 
-// Centre of a cell in world space for lattice spacing s (DOMAIN section 1):
+// Centre of a cell in world space for lattice spacing s (docs/conventions.md, section 1):
 // ((x + 0.5 + z/2) s, (y + 0.5 + z/2) s, (sqrt(2)/2)(z + 0.5) s).
 Vec3 worldPosition(const Cell& cell, double spacing);
 

@@ -1,5 +1,5 @@
-// VisibleSim's XML scene format: the subset this project reads and writes (DOMAIN section 6,
-// docs/file-formats.md).
+// VisibleSim's XML scene format: the subset this project reads and writes
+// (docs/conventions.md, section 6; docs/file-formats.md).
 //
 //   <world gridSize="X,Y,Z"> <camera .../> <spotlight .../>
 //     <blockList blockSize="10,10,10" color="r,g,b">

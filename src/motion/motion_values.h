@@ -17,7 +17,7 @@
 
 namespace datomsim::motion {
 
-// Which table to apply (DOMAIN section 4).
+// Which table to apply (docs/conventions.md, section 4).
 enum class RuleSet : uint8_t {
   kPaper,   // the paper's table, double deformation allowed
   kStrict,  // as VisibleSim: a def(X, Y) cell must be empty

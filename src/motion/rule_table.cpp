@@ -40,7 +40,7 @@ struct Term {
   int secondR = 0, secondF = 0;
 };
 
-// Paper, Table "Motion rules" (DOMAIN section 4 writes the same table by cell).
+// Paper, Table "Motion rules" (the same table, by cell: docs/conventions.md, section 4).
 constexpr std::array<Term, 7> kTurnLeft = {{
     {CellRole::kGoal, 1, -1, 0},
     {CellRole::kK, 2, 0, 0},
@@ -92,7 +92,8 @@ RuleTable::RuleTable() {
       // The mobile sits at U - F: U is one axis of the connector, -F the other.
       const int up = axes[slot];
       const int front = oppositeAxis(axes[1 - slot]);
-      const int right = *geometry::crossAxes(front, up);  // R = F x U (DOMAIN section 4)
+      // R = F x U (docs/conventions.md, section 4)
+      const int right = *geometry::crossAxes(front, up);
       for (const Turn turn : {Turn::kLeft, Turn::kRight, Turn::kAhead}) {
         const int index = direction * kRulesPerNeighbour + slot * 3 + static_cast<int>(turn);
         Rule& rule = rules_[index];

@@ -1,5 +1,5 @@
-// The motion rules of the paper (section VI, Table "Motion rules"; DOMAIN section 4), compiled
-// once for every way a mobile module can sit next to a pivot.
+// The motion rules of the paper (section VI, Table "Motion rules"; docs/conventions.md, section 4),
+// compiled once for every way a mobile module can sit next to a pivot.
 //
 // A mobile B next to a pivot A touches it through one connector pair; each of the two pistons of
 // A's connector can drive the motion (the "up" axis U), and for each U the mobile can turn left,

@@ -2,7 +2,7 @@
 //
 // They are one table so that the PNG and SVG writers, the browser viewer (which copies the
 // numbers) and the tests agree on every colour. Distances 0..9 follow the paper (figure
-// "gradient", DOMAIN section 7); the paper says nothing beyond 9, see distanceColor.
+// "gradient"; docs/conventions.md, section 7); the paper says nothing beyond 9, see distanceColor.
 #pragma once
 
 #include "world/module.h"

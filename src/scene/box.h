@@ -2,8 +2,8 @@
 //
 // A box is given in plain skew coordinates, like the paper's 7x7x2 box (x, y in 1..7, z in 0..1):
 // cells x in [ox, ox+X), y in [oy, oy+Y), z in [oz, oz+Z). Layers are therefore shifted by half a
-// cell per layer in world space (DOMAIN section 1); a tall box leans, a two-layer one is what the
-// paper draws. Modules are numbered x fastest, then y, then z, as in the paper's files.
+// cell per layer in world space (docs/conventions.md, section 1); a tall box leans, a two-layer one
+// is what the paper draws. Modules are numbered x fastest, then y, then z, as in the paper's files.
 #pragma once
 
 #include <optional>

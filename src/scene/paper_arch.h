@@ -1,4 +1,5 @@
-// The scene of the paper's experiments (section VII; DOMAIN section 7), in the project's terms.
+// The scene of the paper's experiments (section VII; docs/conventions.md, section 7), in the
+// project's terms.
 //
 // 130 Datoms: the mobile module (id 1, green, orientation 9) at the goal cell G = (6,5,2), a 7x7x2
 // box (x, y in 1..7, z in 0..1, olive 128,128,64), and a grey (96,96,96) obstacle arch over the
@@ -16,7 +17,7 @@ namespace datomsim::scene {
 
 // The goal cell G, where the paper's scenes place the mobile module.
 inline constexpr geometry::Cell kPaperGoal{6, 5, 2};
-// Where the mobile starts in the follow-gradient run (DOMAIN section 7).
+// Where the mobile starts in the follow-gradient run (docs/conventions.md, section 7).
 inline constexpr geometry::Cell kPaperStart{0, 0, 2};
 inline constexpr geometry::Cell kPaperGridSize{11, 11, 11};
 inline constexpr ModuleId kPaperMobile{1};

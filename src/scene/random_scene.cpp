@@ -14,7 +14,7 @@ using geometry::Cell;
 
 namespace {
 
-// The four lower neighbours of a cell are directions 8..11 (DOMAIN section 1).
+// The four lower neighbours of a cell are directions 8..11 (docs/conventions.md, section 1).
 constexpr int kFirstDownDirection = 8;
 
 bool restsOnSomething(const world::World& world, const Cell& cell) {

@@ -111,8 +111,9 @@ Status MotionExecutor::start(uint32_t index, const motion::Motion& request) {
 
 ActiveMotion MotionExecutor::plan(const motion::Motion& motion, uint32_t mobileIndex,
                                   uint32_t pivotIndex) const {
-  // The geometry of the two quarter turns (DOMAIN section 5): the first about -R through the
-  // hinge between pivot and mobile, the second about U x G through the hinge towards the goal.
+  // The geometry of the two quarter turns (docs/conventions.md, section 5): the first about -R
+  // through the hinge between pivot and mobile, the second about U x G through the hinge towards
+  // the goal.
   const motion::Rule& rule = *motion.rule;
   const Module& pivot = world_.modules()[pivotIndex];
   const Module& mobile = world_.modules()[mobileIndex];

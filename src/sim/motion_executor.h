@@ -1,5 +1,5 @@
-// The motion executor: the timed phases of every motion in progress (DOMAIN section 5; the
-// steps are written out in docs/simulation.md).
+// The motion executor: the timed phases of every motion in progress
+// (docs/conventions.md, section 5; the steps are written out in docs/simulation.md).
 //
 // Contract:
 //   - start() judges the request again on the world as it is now, checks that pivot and mobile

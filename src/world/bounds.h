@@ -1,4 +1,4 @@
-// Which cells of the lattice a module may occupy (DOMAIN section 6).
+// Which cells of the lattice a module may occupy (docs/conventions.md, section 6).
 //
 // The ground lies below z = 0. A world may also declare a grid size (X, Y, Z), as VisibleSim's
 // XML always does; a cell is then inside when 0 <= z < Z, 0 <= x + floor(z/2) < X and

@@ -1,7 +1,8 @@
 // The viewer's colours: distances (a copy of src/render/colors.cpp, checked by a unit test against
 // docs/pictures.md) and the colours of a module's parts.
 
-// Paper, figure "gradient" caption; DOMAIN section 7. Green and pink as in src/render/colors.cpp.
+// Paper, figure "gradient" caption; docs/conventions.md, section 7. Green and pink as in
+// src/render/colors.cpp.
 export const PAPER_DISTANCE_COLORS = [
   [255, 0, 0], // 0 red
   [255, 165, 0], // 1 orange

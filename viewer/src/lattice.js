@@ -1,8 +1,10 @@
-// The skew FCC lattice of the simulator (DOMAIN section 1, src/geometry/lattice.h): cell centres
-// in world space and the 12 neighbour directions. The viewer needs them for overlays (distance
-// maps and paths are given as cells) and to name the neighbour behind a latched connector.
+// The skew FCC lattice of the simulator (docs/conventions.md, section 1; src/geometry/lattice.h):
+// cell centres in world space and the 12 neighbour directions. The viewer needs them for overlays
+// (distance maps and paths are given as cells) and to name the neighbour behind a latched
+// connector.
 
-// Offsets of the neighbour cell faced by direction d = 0..11 (DOMAIN section 1 table).
+// Offsets of the neighbour cell faced by direction d = 0..11
+// (docs/conventions.md, section 1 table).
 export const NEIGHBOUR_OFFSETS = [
   [1, 0, 0],
   [0, 1, 0],

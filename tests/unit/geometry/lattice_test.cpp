@@ -35,7 +35,7 @@ TEST(Lattice, ConnectorDirectionsMatchThePapersPoints) {
   expectNear(directionVector(10) * r, {r / 2, r / 2, -r / std::sqrt(2.0)});
 }
 
-TEST(Lattice, EachPistonMovesTheFourConnectorsOfTheDomainTable) {
+TEST(Lattice, EachPistonMovesTheFourConnectorsOfTheConventionsTable) {
   const std::array<std::array<int, 4>, 6> expected = {{
       {0, 1, 2, 10},
       {1, 3, 6, 11},

@@ -116,7 +116,7 @@ TEST(RuleTable, EveryRuleMatchesThePapersTable) {
 }
 
 TEST(RuleTable, EveryCompressionPointsAtAHoleTheMobileSweeps) {
-  // DOMAIN section 4: U, 2U - F, or 2U + the goal direction.
+  // docs/conventions.md, section 4: U, 2U - F, or 2U + the goal direction.
   const RuleTable table;
   for (const Rule& rule : table.rules()) {
     const Cell U = geometry::doubledAxis(rule.up);

@@ -25,10 +25,12 @@ geometry::Cell parseCell(const std::string& option, const std::string& text) {
   return {values[0], values[1], values[2]};
 }
 
-motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment) {
+motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment,
+                                     const std::string& connectivity) {
   motion::RuleOptions options;
   options.rules = rules == "strict" ? motion::RuleSet::kStrict : motion::RuleSet::kPaper;
   options.attachment = attachment != "off";
+  options.connectivity = connectivity == "on";
   return options;
 }
 

@@ -21,13 +21,15 @@ class UsageError : public std::runtime_error {
 // "x,y,z" with integers; throws UsageError naming the option and the value.
 geometry::Cell parseCell(const std::string& option, const std::string& text);
 
-// "paper" | "strict" and "on" | "off".
-motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment);
+// "paper" | "strict", and "on" | "off" for the attachment and connectivity checks.
+motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment,
+                                     const std::string& connectivity = "off");
 
-// The rule options every motion command takes: --rules and --attachment.
+// The rule options every motion command takes: --rules, --attachment, --connectivity.
 struct RuleArguments {
   std::string rules = "paper";
   std::string attachment = "on";
+  std::string connectivity = "off";
 
   void addTo(CLI::App& command) {
     command.add_option("--rules", rules, "Rule table: paper (double deformation) or strict")
@@ -38,8 +40,14 @@ struct RuleArguments {
                     "Refuse deformations that would make a module let go: on or off")
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
+    command
+        .add_option("--connectivity", connectivity,
+                    "Refuse motions and deformations that would cut modules off from the "
+                    "ensemble: on or off")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
   }
-  motion::RuleOptions options() const { return parseRuleOptions(rules, attachment); }
+  motion::RuleOptions options() const { return parseRuleOptions(rules, attachment, connectivity); }
 };
 
 }  // namespace datomsim::app

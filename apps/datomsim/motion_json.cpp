@@ -26,9 +26,11 @@ std::string reachJson(const motion::DistanceMap& map, const std::vector<Cell>& p
   std::string out;
   auto sink = std::back_inserter(out);
   const Cell& goal = map.goal();
-  fmt::format_to(sink, "{{\"goal\":[{},{},{}],\"rules\":\"{}\",\"attachment\":\"{}\",", goal.x,
-                 goal.y, goal.z, motion::toString(map.options().rules),
-                 onOff(map.options().attachment));
+  fmt::format_to(sink,
+                 "{{\"goal\":[{},{},{}],\"rules\":\"{}\",\"attachment\":\"{}\","
+                 "\"connectivity\":\"{}\",",
+                 goal.x, goal.y, goal.z, motion::toString(map.options().rules),
+                 onOff(map.options().attachment), onOff(map.options().connectivity));
   if (!path.empty()) {
     out += "\"path\":[";
     for (size_t i = 0; i < path.size(); ++i) {

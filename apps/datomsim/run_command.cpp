@@ -13,7 +13,10 @@
 namespace datomsim::app {
 
 std::string runJson(const std::string& program, const experiment::RunResult& result) {
+  const sim::Statistics& statistics = result.statistics;
+  auto seconds = [](program::Time t) { return double(t) / program::kSecond; };
   nlohmann::ordered_json out;
+  out["program"] = program;
   if (!algorithms::programInfo(program)->mobileWalks) {
     // Exactly as `reach` writes its distances.
     nlohmann::ordered_json distances = nlohmann::ordered_json::array();
@@ -23,19 +26,27 @@ std::string runJson(const std::string& program, const experiment::RunResult& res
     nlohmann::ordered_json path = nlohmann::ordered_json::array();
     for (const geometry::Cell& cell : result.path) path.push_back({cell.x, cell.y, cell.z});
     out["path"] = std::move(path);
-    out["motions"] = result.statistics.motions;
   }
+  out["motions"] = statistics.motions;
+  out["makespan_s"] = seconds(statistics.lastMotionEnd);
+  out["messages"] = statistics.messages();
+  out["max_concurrent_motions"] = statistics.maxConcurrentMotions;
+  out["mean_concurrent_motions"] = statistics.meanConcurrentMotions();
+  nlohmann::ordered_json refusals = nlohmann::ordered_json::object();
+  for (const auto& [reason, count] : statistics.refusalsByReason) refusals[reason] = count;
+  out["refusals_by_reason"] = std::move(refusals);
+  out["reservation_wait_s"] = seconds(statistics.reservationWait);
   nlohmann::ordered_json messages = nlohmann::ordered_json::object();
-  for (const auto& [type, count] : result.statistics.messagesByType) messages[type] = count;
-  out["messages"] = std::move(messages);
-  out["events"] = result.statistics.events();
+  for (const auto& [type, count] : statistics.messagesByType) messages[type] = count;
+  out["messages_by_type"] = std::move(messages);
+  out["events"] = statistics.events();
   nlohmann::ordered_json byKind = nlohmann::ordered_json::object();
   for (int kind = 0; kind < sim::kEventKindCount; ++kind) {
-    byKind[sim::toString(sim::EventKind(kind))] = result.statistics.eventsByKind[size_t(kind)];
+    byKind[sim::toString(sim::EventKind(kind))] = statistics.eventsByKind[size_t(kind)];
   }
   out["events_by_kind"] = std::move(byKind);
-  out["deformations"] = result.statistics.deformations;
-  out["sim_time_s"] = double(result.statistics.simulatedTime) / program::kSecond;
+  out["deformations"] = statistics.deformations;
+  out["sim_time_s"] = seconds(statistics.simulatedTime);
   // Wall time stays out of the JSON, which is the same for the same inputs; --stats prints it.
   return out.dump() + "\n";
 }
@@ -55,8 +66,17 @@ void printStatistics(const sim::Statistics& statistics) {
   for (const auto& [type, count] : statistics.messagesByType) {
     fmt::print(stderr, "  {:<18}{}\n", type, count);
   }
-  fmt::print(stderr, "motions     {}\ndeformations {}\nsimulated   {:.3f} s\n", statistics.motions,
-             statistics.deformations, double(statistics.simulatedTime) / program::kSecond);
+  fmt::print(stderr, "motions     {} (at most {} at once, {:.2f} on average; makespan {:.3f} s)\n",
+             statistics.motions, statistics.maxConcurrentMotions,
+             statistics.meanConcurrentMotions(),
+             double(statistics.lastMotionEnd) / program::kSecond);
+  for (const auto& [reason, count] : statistics.refusalsByReason) {
+    fmt::print(stderr, "  refused, {:<26}{}\n", reason, count);
+  }
+  fmt::print(stderr, "  waiting for reservations {:.3f} s\n",
+             double(statistics.reservationWait) / program::kSecond);
+  fmt::print(stderr, "deformations {}\nsimulated   {:.3f} s\n", statistics.deformations,
+             double(statistics.simulatedTime) / program::kSecond);
 }
 
 }  // namespace
@@ -68,6 +88,7 @@ void addRunCommand(CLI::App& app) {
     RuleArguments rules;
     uint64_t seed = 1;
     double delayMs = 10, jitterMs = 0;
+    int maxMotions = 0;
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command =
@@ -97,6 +118,11 @@ void addRunCommand(CLI::App& app) {
                    "Extra random message delay, uniform in [0, jitter], in milliseconds")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  command
+      ->add_option("--max-motions", args->maxMotions,
+                   "Motions in flight at once; requests beyond wait in request order "
+                   "(default: no limit; 1 gives the sequential baseline)")
+      ->check(CLI::PositiveNumber);
   addOutputOption(*command, args->out);
   command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
   command->add_flag("--stats", args->stats,
@@ -108,6 +134,8 @@ void addRunCommand(CLI::App& app) {
     request.goal = parseCell("--goal", args->goal);
     if (!args->start.empty()) request.start = parseCell("--start", args->start);
     request.simulation.rules = args->rules.options();
+    request.simulation.connectivity = request.simulation.rules.connectivity;
+    request.simulation.maxMotions = args->maxMotions;
     request.simulation.seed = args->seed;
     request.simulation.messageDelay = program::Time(args->delayMs * program::kMillisecond);
     request.simulation.messageJitter = program::Time(args->jitterMs * program::kMillisecond);

@@ -64,7 +64,7 @@ void FollowGradientProgram::choose(program::ModuleContext& context) {
   waitingAcks_ = sendToBlockingModules<DeformMsg>(context);
   if (waitingAcks_ == 0) {
     phase_ = Phase::kMoving;
-    const Status moving = context.move(*chosen_);
+    const program::MoveResult moving = context.move(*chosen_);
     if (!moving.ok()) fail(moving.error());
   }
 }
@@ -145,7 +145,7 @@ void FollowGradientProgram::handleRouted(program::ModuleContext& context, const 
     // Algorithm 1, AckDeform handler: move once every blocking module has answered.
     if (--waitingAcks_ == 0) {
       phase_ = Phase::kMoving;
-      const Status moving = context.move(*chosen_);
+      const program::MoveResult moving = context.move(*chosen_);
       if (!moving.ok()) fail(moving.error());
     }
   } else if (type == AckRelease::kName && phase_ == Phase::kReleasing) {

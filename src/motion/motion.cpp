@@ -2,12 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <tuple>
 #include <utility>
 
 #include "geometry/lattice.h"
+#include "world/latch_search.h"
 
 namespace datomsim::motion {
 
@@ -38,8 +40,21 @@ std::string_view toString(RefusalReason reason) {
       return "deforming modules would let go together";
     case RefusalReason::kMobileNotLatched:
       return "mobile not latched to pivot";
+    case RefusalReason::kWouldDisconnect:
+      return "would disconnect";
   }
   return "?";
+}
+
+std::string describeCutOff(std::span<const ModuleId> modules) {
+  constexpr size_t kNamed = 8;
+  std::string names;
+  for (size_t i = 0; i < std::min(modules.size(), kNamed); ++i) {
+    names += (i ? ", " : "") + std::to_string(modules[i].value);
+  }
+  if (modules.size() > kNamed) names += fmt::format(" and {} more", modules.size() - kNamed);
+  return fmt::format("{} {} would be cut off from the rest",
+                     modules.size() == 1 ? "module" : "modules", names);
 }
 
 std::string describe(const Refusal& refusal) {
@@ -77,6 +92,8 @@ std::string describe(const Refusal& refusal) {
                                "motion, and they would let go together");
     case RefusalReason::kMobileNotLatched:
       return head + "the mobile is not latched to the pivot";
+    case RefusalReason::kWouldDisconnect:
+      return head + "the ensemble would fall apart: " + describeCutOff(refusal.cutOff);
   }
   return head;
 }
@@ -153,6 +170,27 @@ std::optional<std::pair<int, int>> groupLetsGo(const World& world, const Deformi
   return std::nullopt;
 }
 
+// The fixed modules a motion would cut off from their piece: the latches it breaks are the
+// pivot's along U (but the one holding the mobile) and those each deforming module's pistons move.
+// The mobile takes no part: it is held by the pivot alone.
+std::vector<uint32_t> cutOffByMotion(const World& world, const Rule& rule, const Cell& pivotCell,
+                                     const DeformingGroup& group, int size, const Mobile& mobile) {
+  std::vector<world::BrokenLatch> broken;
+  const Module& pivot = *world.moduleAt(pivotCell);
+  for (const int direction : geometry::directionsOfAxis(rule.up)) {
+    if (direction != rule.mobileDirection) world::addBrokenLatch(world, pivot, direction, broken);
+  }
+  for (int i = 0; i < size; ++i) {
+    for (const int axis : group[i].axes) {
+      if (axis < 0) continue;
+      for (const int direction : geometry::directionsOfAxis(axis)) {
+        world::addBrokenLatch(world, *group[i].module, direction, broken);
+      }
+    }
+  }
+  return world::cutOffPiece(world, broken, mobile.module);
+}
+
 // Checks one rule. Fills `refusal` when it fails and, if `deformations` is given, the list of
 // modules that must deform when it holds. Written for the hot loop of reachability: no
 // allocation unless a deformation list is asked for.
@@ -207,6 +245,18 @@ bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mo
       return refuse(d.need->role, d.cell, RefusalReason::kGroupWouldLetGo, d.module, lets->second);
     }
   }
+  if (options.connectivity) {
+    auto cutOff = cutOffByMotion(world, rule, pivotCell, group, groupSize, mobile);
+    if (!cutOff.empty()) {
+      const bool refused = refuse(CellRole::kGoal, pivotCell + rule.goalOffset,
+                                  RefusalReason::kWouldDisconnect, nullptr);
+      if (refusal) {
+        for (const uint32_t index : cutOff) refusal->cutOff.push_back(world.modules()[index].id);
+        std::sort(refusal->cutOff.begin(), refusal->cutOff.end());
+      }
+      return refused;
+    }
+  }
   if (deformations) {
     for (int i = 0; i < groupSize; ++i) {
       const DeformingModule& d = group[i];
@@ -216,6 +266,32 @@ bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mo
   }
   return true;
 }
+
+}  // namespace
+
+std::optional<std::pair<ModuleId, int>> firstToLetGo(const World& world,
+                                                     std::span<const Deformation> deformations,
+                                                     std::optional<ModuleId> mobile) {
+  DeformingGroup group;
+  int size = 0;
+  for (const Deformation& d : deformations) {
+    const Module* module = world.find(d.module);
+    if (!module || size == int(group.size())) continue;
+    for (const int axis : {d.firstAxis, d.secondAxis}) {
+      if (axis >= 0 && !staysAttached(world, *module, axis, mobile))
+        return std::pair{d.module, axis};
+    }
+    group[size++] = {module, {d.firstAxis, d.secondAxis}, nullptr, d.cell};
+  }
+  if (size >= 2) {
+    if (const auto lets = groupLetsGo(world, group, size, mobile)) {
+      return std::pair{group[lets->first].module->id, lets->second};
+    }
+  }
+  return std::nullopt;
+}
+
+namespace {
 
 // The mobile's module when it really is at the mobile's cell, else nullptr.
 const Module* realMobile(const World& world, const Mobile& mobile) {

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <optional>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "geometry/cell.h"
@@ -51,6 +53,13 @@ std::vector<Evaluation> evaluateAll(const world::World& world, const RuleTable& 
 // The valid motions only.
 std::vector<Motion> validMotions(const world::World& world, const RuleTable& table,
                                  const Mobile& mobile, const RuleOptions& options);
+
+// The first module of a deformation list that would let go, with the world axis at fault: the
+// paper's rule for each module (staysAttached), then the group rule (modules deforming together
+// must not hold only to each other), judged on the world's latches now; nullopt when all hold.
+std::optional<std::pair<ModuleId, int>> firstToLetGo(const world::World& world,
+                                                     std::span<const Deformation> deformations,
+                                                     std::optional<ModuleId> mobile);
 
 // True when the module holds to a module other than `mobile` through a latched connector that
 // the piston along world axis `axis` does not move.

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -28,6 +29,9 @@ struct RuleOptions {
   // When on, a module asked to compress a piston must stay latched to a module other than the
   // mobile through a connector that piston does not move (paper, end of section VI).
   bool attachment = true;
+  // When on, a motion is refused when the latches it breaks (the pivot's along U, the deforming
+  // modules' pistons) would cut part of the fixed world off from the rest (docs/motion-rules.md).
+  bool connectivity = false;
 };
 
 std::string_view toString(RuleSet rules);
@@ -62,6 +66,7 @@ enum class RefusalReason : uint8_t {
   kGroupWouldLetGo,    // attachment check: it would hold only to modules deforming with it, which
                        // hold to nothing else
   kMobileNotLatched,   // the mobile is in the world but not latched to the pivot
+  kWouldDisconnect,    // connectivity check: some fixed modules would be cut off
 };
 
 std::string_view toString(RefusalReason reason);
@@ -75,12 +80,16 @@ struct Refusal {
   ModuleId blocker;  // the module in the cell, when there is one
   // The axis the module could not compress (attachment refusals), or -1.
   int8_t axis = -1;
+  // The modules that would be cut off (connectivity refusals), sorted by id.
+  std::vector<ModuleId> cutOff;
 };
 
 // A human-readable sentence for a refusal, e.g. "turn left about pivot 12 at 3,4,1 with piston 4:
 // cell C 4,5,2 holds module 30, which would let go: it is latched only through connectors that
 // piston 2 moves".
 std::string describe(const Refusal& refusal);
+// "modules 4, 9 would be cut off from the rest" (the first 8 named, then how many more).
+std::string describeCutOff(std::span<const ModuleId> modules);
 
 using Evaluation = std::variant<Motion, Refusal>;
 

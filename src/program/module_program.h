@@ -23,14 +23,10 @@
 #include "geometry/orientation.h"
 #include "motion/motion_values.h"
 #include "program/message.h"
+#include "program/move_result.h"
+#include "program/time.h"
 
 namespace datomsim::program {
-
-// Simulated time in microseconds: integers keep event order exact and runs reproducible.
-using Time = int64_t;
-inline constexpr Time kMicrosecond = 1;
-inline constexpr Time kMillisecond = 1000;
-inline constexpr Time kSecond = 1000000;
 
 class ModuleContext {
  public:
@@ -55,7 +51,9 @@ class ModuleContext {
   virtual Status send(int ownConnector, const Message& message) = 0;
 
   // Compresses one of the module's own pistons, or releases the compressed one. Refused when
-  // another piston is compressed or moving, or when the module is in a motion. The program hears
+  // another piston is compressed or moving, when the module is in a motion or has one queued,
+  // when a motion in progress needs the piston compressed (release), or, with connectivity on,
+  // when the latches the piston moves hold part of the ensemble on (compress). The program hears
   // back through onDeformationDone.
   virtual Status compress(int ownPiston) = 0;
   virtual Status release() = 0;
@@ -71,10 +69,13 @@ class ModuleContext {
   virtual int goalsAsPivot(const geometry::Cell& mobileCell,
                            std::array<geometry::Cell, 6>& goals) const = 0;
 
-  // Starts a motion. The simulator checks at once that the rule still holds and that every module
-  // of its deformation list has compressed its piston; a refusal comes back as the error. The
-  // program hears back through onMotionDone.
-  virtual Status move(const motion::Motion& motion) = 0;
+  // Asks for a motion. The simulator judges it at once: the rule must still hold, every module of
+  // its deformation list must have compressed its piston, and nothing it needs may be reserved by
+  // a motion in progress (docs/simulation.md). Then it starts, or waits in the queue when the run
+  // limits concurrent motions; otherwise the refusal says why and who holds what. The program
+  // hears of the end through onMotionDone, or of a queued request refused later through
+  // onMotionRefused.
+  virtual MoveResult move(const motion::Motion& motion) = 0;
 
   // Calls onTimer(tag) after `delay`.
   virtual void setTimer(Time delay, int tag) = 0;
@@ -96,6 +97,8 @@ class ModuleProgram {
   virtual void onDeformationDone(ModuleContext& /*context*/) {}
   // A motion this module asked for has finished; the module is at the goal.
   virtual void onMotionDone(ModuleContext& /*context*/) {}
+  // A queued motion request was judged again when its turn came, and refused.
+  virtual void onMotionRefused(ModuleContext& /*context*/, const MoveRefusal& /*refusal*/) {}
   // A timer this module set has fired, or the run's driver triggered it (Simulator::trigger).
   virtual void onTimer(ModuleContext& /*context*/, int /*tag*/) {}
 };

@@ -151,6 +151,15 @@ void TraceWriter::motionStarted(program::Time t, const sim::MotionStart& start) 
                       geometry::toString(start.plan->goal)));
 }
 
+void TraceWriter::motionRefused(program::Time t, ModuleId, const program::MoveRefusal& refusal) {
+  note(t, "motion refused: " + refusal.text);
+}
+
+void TraceWriter::deformationRefused(program::Time t, ModuleId, std::string_view,
+                                     const std::string& text) {
+  note(t, "deformation refused: " + text);
+}
+
 void TraceWriter::turnStarted(program::Time t, const sim::QuarterTurn& turn) {
   const Vec3 centre = hinge(geometry::worldPosition(turn.pivotCell, spacing()), turn.up, turn.side);
   const bool compressing = turn.first;

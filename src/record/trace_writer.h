@@ -37,6 +37,10 @@ class TraceWriter final : public sim::Observer {
   void pistonMoving(program::Time t, const sim::PistonMove& move) override;
   void latchChanged(program::Time t, const world::LatchPair& pair, bool latched) override;
   void motionStarted(program::Time t, const sim::MotionStart& start) override;
+  void motionRefused(program::Time t, ModuleId mobile,
+                     const program::MoveRefusal& refusal) override;
+  void deformationRefused(program::Time t, ModuleId module, std::string_view reason,
+                          const std::string& text) override;
   void turnStarted(program::Time t, const sim::QuarterTurn& turn) override;
   void modulePlaced(program::Time t, const world::Module& module) override;
   void colorChanged(program::Time t, ModuleId module, Color color) override;

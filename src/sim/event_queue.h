@@ -25,8 +25,9 @@ enum class EventKind : uint8_t {
   kMotionMiddle,     // a motion's first quarter turn ends: the latch switches
   kMotionResume,     // double deformations have switched pistons: the second quarter turn starts
   kMotionEnd,        // the mobile reaches the goal
+  kMotionSwitch,     // double deformations: the first piston is back at rest, the second starts
 };
-inline constexpr int kEventKindCount = 7;
+inline constexpr int kEventKindCount = 8;
 
 const char* toString(EventKind kind);
 

@@ -5,8 +5,12 @@
 //     section III.B);
 //   - each mobile in motion is latched to its pivot (the paper's central claim);
 //   - every module of a motion's deformation list keeps the piston its rule needs while the
-//     mobile passes (releasing early is a violation, not a refusal);
-//   - no module enters the goal of a motion in progress.
+//     mobile passes (releasing early is a violation, not a refusal), and stays attached to the
+//     ensemble by the paper's rule and the group rule;
+//   - no module arrives in a cell reserved by another motion, and a cell holds one module;
+//   - with connectivity on, no latch broken in this event has split a piece of the ensemble.
+// An event that changed no piston, latch or cell (a message, say) cannot break any of them; the
+// checks that depend on those run only after events that changed them.
 #pragma once
 
 #include <optional>
@@ -19,9 +23,9 @@
 
 namespace datomsim::sim {
 
-// `touched`: the modules whose pistons changed during the event (Mechanics::touched).
+// `placed`: the modules that took a new cell in this event.
 std::optional<std::string> findViolation(const world::World& world, const Mechanics& mechanics,
                                          const MotionExecutor& motions,
-                                         std::span<const uint32_t> touched);
+                                         std::span<const uint32_t> placed);
 
 }  // namespace datomsim::sim

@@ -26,15 +26,15 @@ Mechanics::Mechanics(world::World& world, EventQueue& agenda, const Announcer& a
       deformationTime_(deformationTime),
       pistons_(world.size()) {}
 
-Status Mechanics::compress(uint32_t index, int ownPiston, bool inMotion) {
-  Pistons& state = pistons_[index];
+Status Mechanics::checkCompress(uint32_t index, int ownPiston, const char* busy) const {
+  const Pistons& state = pistons_[index];
   const Module& module = world_.modules()[index];
   if (ownPiston < 0 || ownPiston >= geometry::kAxisCount) {
     return Error{fmt::format("module {}: no piston {}", module.id.value, ownPiston)};
   }
-  if (inMotion) {
-    return Error{fmt::format("module {}: cannot compress piston {} during a motion",
-                             module.id.value, ownPiston)};
+  if (busy) {
+    return Error{
+        fmt::format("module {}: cannot compress piston {} {}", module.id.value, ownPiston, busy)};
   }
   if (state.piston >= 0) {
     return Error{
@@ -42,6 +42,12 @@ Status Mechanics::compress(uint32_t index, int ownPiston, bool inMotion) {
                     "(only one piston at a time, paper section III.B)",
                     module.id.value, ownPiston, state.piston)};
   }
+  return Ok{};
+}
+
+void Mechanics::compress(uint32_t index, int ownPiston) {
+  Pistons& state = pistons_[index];
+  const Module& module = world_.modules()[index];
   state.piston = static_cast<int8_t>(ownPiston);
   state.phase = Phase::kCompressing;
   state.compressedMask |= pistonBit(ownPiston);
@@ -55,7 +61,6 @@ Status Mechanics::compress(uint32_t index, int ownPiston, bool inMotion) {
   announce_(&Observer::pistonMoving, now,
             PistonMove{module.id, ownPiston, 0, 1, now, deformationTime_, PistonCause::kProgram});
   agenda_.schedule(now + deformationTime_, EventKind::kDeformationDone, index, 0);
-  return Ok{};
 }
 
 Status Mechanics::release(uint32_t index) {
@@ -121,20 +126,32 @@ void Mechanics::rest(uint32_t index) {
   touch(index);
 }
 
-void Mechanics::switchPiston(uint32_t index, int ownPiston) {
-  Pistons& state = pistons_[index];
+void Mechanics::beginSwitch(uint32_t index, int ownPiston) {
   const ModuleId id = world_.modules()[index].id;
   const program::Time now = agenda_.now();
-  announce_(
-      &Observer::pistonMoving, now,
-      PistonMove{id, state.piston, 1, 0, now, deformationTime_, PistonCause::kDoubleDeformation});
+  announce_(&Observer::pistonMoving, now,
+            PistonMove{id, pistons_[index].piston, 1, 0, now, deformationTime_,
+                       PistonCause::kDoubleDeformation});
   announce_(&Observer::pistonMoving, now,
             PistonMove{id, ownPiston, 0, 1, now + deformationTime_, deformationTime_,
                        PistonCause::kDoubleDeformation});
+  pistons_[index].next = static_cast<int8_t>(ownPiston);
+}
+
+void Mechanics::finishSwitch(uint32_t index, std::span<const int16_t> motionOf) {
+  Pistons& state = pistons_[index];
+  const int second = state.next;
+  state.next = -1;
   state.compressedMask &= uint8_t(~pistonBit(state.piston));
-  state.compressedMask |= pistonBit(ownPiston);
-  state.piston = static_cast<int8_t>(ownPiston);
+  state.compressedMask |= pistonBit(second);
+  state.piston = static_cast<int8_t>(second);
   touch(index);
+  // Y's connectors turn away from their neighbours; X's, back at rest, latch again.
+  const Module& module = world_.modules()[index];
+  for (const int direction : geometry::directionsOfAxis(module.orientation.worldAxis(second))) {
+    if (world_.isLatched(module, direction)) setLatched(module, direction, false);
+  }
+  relatch(index, motionOf);
 }
 
 void Mechanics::setLatched(const Module& module, int direction, bool latched) {
@@ -145,14 +162,21 @@ void Mechanics::setLatched(const world::LatchPair& pair, bool latched) {
   // Every pair comes from the world's facingPair or a motion's hinge: a refusal is a bug.
   const Status changed = world_.setLatched(pair, latched);
   if (!changed.ok()) throw std::logic_error("latch change refused: " + changed.error());
+  if (!latched) {
+    broken_.push_back({*world_.indexOf(pair.a), pair.connectorA});
+    broken_.push_back({*world_.indexOf(pair.b), pair.connectorB});
+  }
   announce_(&Observer::latchChanged, agenda_.now(), pair, latched);
 }
 
 void Mechanics::relatch(uint32_t index, std::span<const int16_t> motionOf) {
   const Module& module = world_.modules()[index];
+  const int ownAxis =
+      pistons_[index].piston >= 0 ? module.orientation.worldAxis(pistons_[index].piston) : -1;
   for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
     const Module* neighbour = world_.neighbour(module, direction);
     if (!neighbour || world_.isLatched(module, direction)) continue;
+    if (ownAxis >= 0 && geometry::axisMovesDirection(ownAxis, direction)) continue;
     const uint32_t other = *world_.indexOf(neighbour->id);
     if (motionOf[other] >= 0) continue;
     const Pistons& pistons = pistons_[other];

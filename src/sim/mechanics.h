@@ -21,6 +21,7 @@
 #include "common/result.h"
 #include "sim/event_queue.h"
 #include "sim/observer.h"
+#include "world/latch_search.h"
 #include "world/world.h"
 
 namespace datomsim::sim {
@@ -39,6 +40,7 @@ class Mechanics {
     int8_t piston = -1;  // own piston away from rest, or -1
     Phase phase = Phase::kRest;
     uint8_t compressedMask = 0;  // own pistons away from rest: the invariant wants at most one
+    int8_t next = -1;            // a double deformation's second piston, until it compresses
   };
 
   // `deformationTime`: from rest to fully compressed, and back.
@@ -47,10 +49,12 @@ class Mechanics {
 
   const Pistons& pistons(uint32_t index) const { return pistons_[index]; }
 
-  // What a program asks. Refused with the reason: no such piston, the module is in a motion,
-  // another piston is not at rest; release: nothing compressed. The end comes as a
+  // What a program asks. checkCompress refuses, with the reason, no such piston, a module that is
+  // busy (in a motion, or with one queued: `busy` says which), another piston not at rest;
+  // compress then acts. release refuses when nothing is compressed. The end comes as a
   // deformation-done event, to be handed to finishDeformation.
-  Status compress(uint32_t index, int ownPiston, bool inMotion);
+  Status checkCompress(uint32_t index, int ownPiston, const char* busy) const;
+  void compress(uint32_t index, int ownPiston);
   Status release(uint32_t index);
   // The deformation-done event. True when a program's compression or release is over (its
   // program hears of it); false for the end of a double deformation's switch.
@@ -62,20 +66,27 @@ class Mechanics {
   void drive(uint32_t index, int ownPiston, program::Time duration);
   void driveBack(uint32_t index, program::Time duration);
   void rest(uint32_t index);
-  // A def(X, Y) module half-way through a motion: releases X, then compresses Y, one
-  // deformation time each.
-  void switchPiston(uint32_t index, int ownPiston);
+  // A def(X, Y) module half-way through a motion releases X, then compresses Y, one deformation
+  // time each: beginSwitch announces both moves; finishSwitch, when X is back at rest, latches
+  // X's connectors again where they face a module at rest and lets go of Y's.
+  void beginSwitch(uint32_t index, int ownPiston);
+  void finishSwitch(uint32_t index, std::span<const int16_t> motionOf);
 
   // Latches or releases the pair facing across world direction d (a neighbour must be there),
   // or any pair (a motion's hinge).
   void setLatched(const world::Module& module, int direction, bool latched);
   void setLatched(const world::LatchPair& pair, bool latched);
-  // Latches every connector of a module to a facing neighbour at rest whose own connector is at
-  // rest too, skipping modules in a motion.
+  // Latches every connector of a module that its own piston does not hold away to a facing
+  // neighbour whose own connector is at rest too, skipping modules in a motion.
   void relatch(uint32_t index, std::span<const int16_t> motionOf);
 
   std::span<const uint32_t> touched() const { return touched_; }
-  void clearTouched() { touched_.clear(); }
+  // The latches broken during the current event, both ends (for the connectivity invariant).
+  std::span<const world::BrokenLatch> broken() const { return broken_; }
+  void clearEvent() {
+    touched_.clear();
+    broken_.clear();
+  }
 
  private:
   void touch(uint32_t index) { touched_.push_back(index); }
@@ -86,6 +97,7 @@ class Mechanics {
   program::Time deformationTime_;
   std::vector<Pistons> pistons_;  // by world module index
   std::vector<uint32_t> touched_;
+  std::vector<world::BrokenLatch> broken_;
 };
 
 }  // namespace datomsim::sim

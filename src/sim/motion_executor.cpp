@@ -2,24 +2,54 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "geometry/lattice.h"
 
 namespace datomsim::sim {
 
 using geometry::Cell;
 using geometry::Orientation;
+using program::MoveRefusal;
+using program::MoveResult;
 using world::Module;
+
+namespace {
+
+MoveRefusal refusal(MoveRefusal::Reason reason, std::string text) {
+  MoveRefusal refused;
+  refused.reason = reason;
+  refused.text = std::move(text);
+  return refused;
+}
+
+}  // namespace
+
+bool ActiveMotion::hasDoubleDeformation() const {
+  return std::any_of(plan.deformations.begin(), plan.deformations.end(),
+                     [](const motion::Deformation& d) { return d.secondAxis >= 0; });
+}
 
 MotionExecutor::MotionExecutor(world::World& world, const motion::RuleOptions& rules,
                                Mechanics& mechanics, EventQueue& agenda, const Announcer& announce,
-                               MotionTimes times)
+                               MotionTimes times, MotionLimits limits)
     : world_(world),
       rules_(rules),
       mechanics_(mechanics),
       agenda_(agenda),
       announce_(announce),
       times_(times),
-      motionOf_(world.size(), -1) {}
+      limits_(limits),
+      motionOf_(world.size(), -1) {
+  // The simulator judges connectivity itself, with the motions in progress (cutOff); the rule's
+  // own check sees the world at rest and would misread a hinge.
+  rules_.connectivity = false;
+}
+
+bool MotionExecutor::isQueued(uint32_t index) const {
+  return std::any_of(queue_.begin(), queue_.end(),
+                     [&](const Queued& queued) { return queued.mobile == index; });
+}
 
 std::optional<MotionExecutor::HingeEnd> MotionExecutor::hingePartner(uint32_t index,
                                                                      int ownConnector) const {
@@ -34,55 +64,182 @@ std::optional<MotionExecutor::HingeEnd> MotionExecutor::hingePartner(uint32_t in
   return std::nullopt;
 }
 
-Status MotionExecutor::start(uint32_t index, const motion::Motion& request) {
+uint32_t MotionExecutor::latchedBehind(uint32_t index, int ownConnector) const {
+  if (const auto hinge = hingePartner(index, ownConnector)) return hinge->module;
+  const Module& module = world_.modules()[index];
+  const Module* other = world_.neighbour(module, module.orientation.worldDirection(ownConnector));
+  return other ? *world_.indexOf(other->id) : world::kNoModule;
+}
+
+std::vector<world::BrokenLatch> MotionExecutor::latchesMovedBy(uint32_t index,
+                                                               int worldAxis) const {
+  std::vector<world::BrokenLatch> broken;
+  const Module& module = world_.modules()[index];
+  for (const int direction : geometry::directionsOfAxis(worldAxis)) {
+    const int own = module.orientation.ownConnector(direction);
+    if (!(module.latches & (1u << own))) continue;
+    const uint32_t other = latchedBehind(index, own);
+    if (other == world::kNoModule) continue;
+    broken.push_back({index, own});
+    if (const auto hinge = hingePartner(index, own)) {
+      broken.push_back({other, hinge->connector});
+    } else {
+      broken.push_back({other, world_.modules()[other].orientation.ownConnector(
+                                   geometry::oppositeDirection(direction))});
+    }
+  }
+  return broken;
+}
+
+std::vector<uint32_t> MotionExecutor::cutOff(std::vector<world::BrokenLatch> broken) const {
+  // Double deformations of motions in progress still to switch will break their second
+  // piston's latches: count them as broken already, so that no instant is missed.
+  for (const ActiveMotion& active : motions_) {
+    if (!active.active || active.resumed) continue;
+    for (const motion::Deformation& d : active.plan.deformations) {
+      if (d.secondAxis < 0) continue;
+      const auto more = latchesMovedBy(*world_.indexOf(d.module), d.secondAxis);
+      broken.insert(broken.end(), more.begin(), more.end());
+    }
+  }
+  const std::span<const Module> modules = world_.modules();
+  return world::cutOffPiece(
+      broken, [&](uint32_t index, int connector) { return latchedBehind(index, connector); },
+      [&](uint32_t index) { return modules[index].latches; }, [](uint32_t) { return false; });
+}
+
+MoveRefusal MotionExecutor::refuse(uint32_t mobileIndex, MoveRefusal refused) const {
+  refused.text = fmt::format("module {}: {}", world_.modules()[mobileIndex].id.value, refused.text);
+  announce_(&Observer::motionRefused, agenda_.now(), world_.modules()[mobileIndex].id, refused);
+  return refused;
+}
+
+MoveResult MotionExecutor::request(uint32_t index, const motion::Motion& request) {
   const Module& mobile = world_.modules()[index];
-  const std::string who = fmt::format("module {}", mobile.id.value);
-  if (!request.rule) return Error{who + ": the motion names no rule"};
-  if (mechanics_.pistons(index).piston >= 0 || inMotion(index)) {
-    return Error{who + ": a mobile must be at rest to move"};
+  if (!request.rule) {
+    return refuse(index, refusal(MoveRefusal::Reason::kInvalidRequest, "the motion names no rule"));
   }
   if (request.from != mobile.cell) {
-    return Error{fmt::format("{}: the motion starts from {} but the module is at {}", who,
-                             geometry::toString(request.from), geometry::toString(mobile.cell))};
+    return refuse(index, refusal(MoveRefusal::Reason::kInvalidRequest,
+                                 fmt::format("the motion starts from {} but the module is at {}",
+                                             geometry::toString(request.from),
+                                             geometry::toString(mobile.cell))));
   }
+  if (const auto holder = reservations_.holderOf(index); holder && !inMotion(index)) {
+    MoveRefusal refused =
+        refusal(MoveRefusal::Reason::kModuleBusy,
+                fmt::format("it holds its piston for the motion of module {} ({})",
+                            holder->mobile.value, untilText(holder->until)));
+    refused.holder = holder->mobile;
+    refused.until = holder->until;
+    refused.module = mobile.id;
+    return refuse(index, std::move(refused));
+  }
+  if (mechanics_.pistons(index).piston >= 0 || inMotion(index) || isQueued(index)) {
+    return refuse(index, refusal(MoveRefusal::Reason::kNotAtRest,
+                                 isQueued(index) ? "it has a motion queued already"
+                                                 : "a mobile must be at rest to move"));
+  }
+  // Beyond the limit, requests wait their turn in request order.
+  if (limits_.maxMotions > 0 && (activeCount_ >= limits_.maxMotions || !queue_.empty())) {
+    queue_.push_back({index, request});
+    announce_(&Observer::motionQueued, agenda_.now(), mobile.id);
+    return MoveResult::queued();
+  }
+  return tryStart(index, request);
+}
+
+MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& request) {
+  const Module& mobile = world_.modules()[index];
   // The world may have changed since the motion was listed: judge the rule again now.
   const Cell pivotCell = mobile.cell - request.rule->mobileOffset;
   const Module* pivot = world_.moduleAt(pivotCell);
-  if (!pivot) return Error{fmt::format("{}: no pivot at {}", who, geometry::toString(pivotCell))};
+  if (!pivot) {
+    return refuse(index, refusal(MoveRefusal::Reason::kRule,
+                                 fmt::format("no pivot at {}", geometry::toString(pivotCell))));
+  }
+  const uint32_t pivotIndex = *world_.indexOf(pivot->id);
+  if (!reservations_.holderOf(pivotIndex) &&
+      (mechanics_.pistons(pivotIndex).piston >= 0 || inMotion(pivotIndex))) {
+    MoveRefusal refused = refusal(MoveRefusal::Reason::kNotAtRest,
+                                  fmt::format("pivot {} is not at rest", pivot->id.value));
+    refused.module = pivot->id;
+    return refuse(index, std::move(refused));
+  }
   const motion::Evaluation judged =
       motion::evaluate(world_, *request.rule, {mobile.cell, mobile.id}, rules_);
-  if (const auto* refusal = std::get_if<motion::Refusal>(&judged)) {
-    return Error{who + ": " + motion::describe(*refusal)};
+  if (const auto* ruleRefusal = std::get_if<motion::Refusal>(&judged)) {
+    MoveRefusal refused = refusal(MoveRefusal::Reason::kRule, motion::describe(*ruleRefusal));
+    refused.cell = ruleRefusal->cell;
+    refused.module = ruleRefusal->blocker;
+    return refuse(index, std::move(refused));
   }
   const motion::Motion& motion = std::get<motion::Motion>(judged);
-  const uint32_t pivotIndex = *world_.indexOf(pivot->id);
-  if (mechanics_.pistons(pivotIndex).piston >= 0 || inMotion(pivotIndex)) {
-    return Error{fmt::format("{}: pivot {} is not at rest", who, pivot->id.value)};
-  }
+  Claim claim = claimOf(world_, motion, index);
+  if (auto conflict = reservations_.conflict(world_, claim)) return refuse(index, *conflict);
   // Every module of the deformation list must already hold its first piston compressed.
   for (const motion::Deformation& d : motion.deformations) {
     const uint32_t other = *world_.indexOf(d.module);
     const Mechanics::Pistons& pistons = mechanics_.pistons(other);
     if (pistons.phase != Mechanics::Phase::kCompressed ||
         world_.modules()[other].orientation.worldAxis(pistons.piston) != d.firstAxis) {
-      return Error{fmt::format(
-          "{}: module {} in cell {} {} must compress its piston along world axis {} first", who,
-          d.module.value, motion::toString(d.role), geometry::toString(d.cell), d.firstAxis)};
+      MoveRefusal refused = refusal(
+          MoveRefusal::Reason::kBlockerNotReady,
+          fmt::format("module {} in cell {} {} must compress its piston along world axis {} first",
+                      d.module.value, motion::toString(d.role), geometry::toString(d.cell),
+                      d.firstAxis));
+      refused.module = d.module;
+      refused.cell = d.cell;
+      return refuse(index, std::move(refused));
     }
   }
-  for (const ActiveMotion& other : motions_) {
-    if (other.active && other.plan.goal == motion.goal) {
-      return Error{fmt::format("{}: goal {} is taken by another motion", who,
-                               geometry::toString(motion.goal))};
+  if (limits_.connectivity) {
+    // The mobile lets go of all but its pivot, the pivot of what U moves but the hinge, and
+    // double deformations will let go of what their second piston moves.
+    const motion::Rule& rule = *motion.rule;
+    std::vector<world::BrokenLatch> broken;
+    const int hinge = geometry::oppositeDirection(rule.mobileDirection);
+    for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
+      if (direction == hinge) continue;
+      world::addBrokenLatch(world_, mobile, direction, broken);
+    }
+    for (const int direction : geometry::directionsOfAxis(rule.up)) {
+      if (direction != rule.mobileDirection)
+        world::addBrokenLatch(world_, *pivot, direction, broken);
+    }
+    for (const motion::Deformation& d : motion.deformations) {
+      if (d.secondAxis < 0) continue;
+      const auto more = latchesMovedBy(*world_.indexOf(d.module), d.secondAxis);
+      broken.insert(broken.end(), more.begin(), more.end());
+    }
+    if (const auto cut = cutOff(std::move(broken)); !cut.empty()) {
+      MoveRefusal refused;
+      refused.reason = MoveRefusal::Reason::kWouldDisconnect;
+      for (const uint32_t i : cut) refused.cutOff.push_back(world_.modules()[i].id);
+      std::sort(refused.cutOff.begin(), refused.cutOff.end());
+      refused.text = "the ensemble would fall apart: " + motion::describeCutOff(refused.cutOff);
+      return refuse(index, std::move(refused));
     }
   }
+  begin(index, motion, std::move(claim));
+  return MoveResult::started();
+}
 
+void MotionExecutor::begin(uint32_t index, const motion::Motion& motion, Claim claim) {
+  const uint32_t pivotIndex = claim.pivot;
   const int slot = freeSlot();
-  motions_[slot] = plan(motion, index, pivotIndex);
-  const ActiveMotion& active = motions_[slot];
-  const motion::Rule& rule = *active.plan.rule;
+  ActiveMotion& active = motions_[slot];
+  active = plan(motion, index, pivotIndex);
+  const program::Time now = agenda_.now();
+  active.start = now;
+  active.until =
+      now + 2 * times_.quarterTurn + (active.hasDoubleDeformation() ? 2 * times_.deformation : 0);
+  active.claim = std::move(claim);
+  reservations_.reserve(active.claim, {slot, world_.modules()[index].id, active.until});
   motionOf_[index] = static_cast<int16_t>(slot);
   motionOf_[pivotIndex] = static_cast<int16_t>(slot);
+  ++activeCount_;
+  const motion::Rule& rule = *active.plan.rule;
 
   // Step 2: the mobile lets go of everything but the pivot; the pivot of the connectors its
   // piston U moves, but the hinge.
@@ -98,15 +255,13 @@ Status MotionExecutor::start(uint32_t index, const motion::Motion& request) {
     }
   }
   // Pivot and mobile compress U and F while the mobile turns about -R.
-  const program::Time now = agenda_.now();
-  announce_(&Observer::motionStarted, now, MotionStart{m.id, p.id, &active.plan});
+  announce_(&Observer::motionStarted, now, MotionStart{m.id, p.id, &active.plan, active.until});
   mechanics_.drive(pivotIndex, p.orientation.ownPiston(rule.up), times_.quarterTurn);
   mechanics_.drive(index, m.orientation.ownPiston(rule.front), times_.quarterTurn);
   announce_(&Observer::turnStarted, now,
             QuarterTurn{m.id, p.id, p.cell, rule.up, geometry::oppositeAxis(rule.front),
                         geometry::oppositeAxis(rule.right), 90.0, times_.quarterTurn, true});
   agenda_.schedule(now + times_.quarterTurn, EventKind::kMotionMiddle, index, slot);
-  return Ok{};
 }
 
 ActiveMotion MotionExecutor::plan(const motion::Motion& motion, uint32_t mobileIndex,
@@ -162,16 +317,29 @@ void MotionExecutor::middle(int slot) {
   mechanics_.setLatched({pivot.id, active.pivotOld, mobile.id, active.mobileOld}, false);
   active.switched = true;
 
-  // A module in a def(X, Y) cell releases X, then compresses Y.
-  bool anyDouble = false;
+  // A module in a def(X, Y) cell releases X (one deformation time), then compresses Y (one more).
+  if (!active.hasDoubleDeformation()) {
+    agenda_.schedule(now, EventKind::kMotionResume, active.mobile, slot);
+    return;
+  }
   for (const motion::Deformation& d : active.plan.deformations) {
     if (d.secondAxis < 0) continue;
-    anyDouble = true;
     const uint32_t index = *world_.indexOf(d.module);
-    mechanics_.switchPiston(index, world_.modules()[index].orientation.ownPiston(d.secondAxis));
+    mechanics_.beginSwitch(index, world_.modules()[index].orientation.ownPiston(d.secondAxis));
   }
-  const program::Time wait = anyDouble ? 2 * times_.deformation : 0;
-  agenda_.schedule(now + wait, EventKind::kMotionResume, active.mobile, slot);
+  agenda_.schedule(now + times_.deformation, EventKind::kMotionSwitch, active.mobile, slot);
+}
+
+void MotionExecutor::switchPistons(int slot) {
+  ActiveMotion& active = motions_[slot];
+  // X is back at rest: its connectors latch again where they can; Y starts to compress and its
+  // connectors let go.
+  for (const motion::Deformation& d : active.plan.deformations) {
+    if (d.secondAxis < 0) continue;
+    mechanics_.finishSwitch(*world_.indexOf(d.module), motionOf_);
+  }
+  agenda_.schedule(agenda_.now() + times_.deformation, EventKind::kMotionResume, active.mobile,
+                   slot);
 }
 
 void MotionExecutor::resume(int slot) {
@@ -191,7 +359,7 @@ void MotionExecutor::resume(int slot) {
   agenda_.schedule(now + times_.quarterTurn, EventKind::kMotionEnd, active.mobile, slot);
 }
 
-Result<uint32_t> MotionExecutor::end(int slot) {
+Result<MotionExecutor::Arrival> MotionExecutor::end(int slot) {
   ActiveMotion& active = motions_[slot];
   const motion::Rule& rule = *active.plan.rule;
   const ModuleId mobileId = world_.modules()[active.mobile].id;
@@ -201,6 +369,8 @@ Result<uint32_t> MotionExecutor::end(int slot) {
       &Observer::turnEnded, now,
       QuarterTurn{mobileId, pivot.id, pivot.cell, rule.up, active.goalAxis,
                   *geometry::crossAxes(rule.up, active.goalAxis), 90.0, times_.quarterTurn, false});
+  // The goal was held for this motion: free it, then take it.
+  reservations_.release(active.claim, slot);
   const Status moved = world_.move(mobileId, active.plan.goal);
   if (!moved.ok()) return Error{"the mobile cannot arrive: " + moved.error()};
   const Status turned = world_.setOrientation(mobileId, active.end);
@@ -221,11 +391,22 @@ Result<uint32_t> MotionExecutor::end(int slot) {
     motionOf_[index] = -1;
   }
   active.active = false;
+  --activeCount_;
   mechanics_.relatch(active.pivot, motionOf_);
   mechanics_.relatch(active.mobile, motionOf_);
   announce_(&Observer::motionEnded, now,
             MotionEnd{mobileId, pivot.id, active.plan.from, active.plan.goal, active.end});
-  return active.mobile;
+
+  // Queued requests get their turn, in request order, while there is room.
+  Arrival arrival;
+  arrival.mobile = active.mobile;
+  while (!queue_.empty() && (limits_.maxMotions <= 0 || activeCount_ < limits_.maxMotions)) {
+    const Queued next = queue_.front();
+    queue_.pop_front();
+    const MoveResult started = tryStart(next.mobile, next.request);
+    if (!started.ok()) arrival.refused.push_back({next.mobile, started.refusal()});
+  }
+  return arrival;
 }
 
 }  // namespace datomsim::sim

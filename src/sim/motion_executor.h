@@ -1,30 +1,40 @@
-// The motion executor: the timed phases of every motion in progress
+// The motion executor: every motion in progress, from the request to the arrival
 // (docs/conventions.md, section 5; the steps are written out in docs/simulation.md).
 //
 // Contract:
-//   - start() judges the request again on the world as it is now, checks that pivot and mobile
-//     are at rest, that every module of the deformation list holds its first piston compressed
-//     and that no other motion has the same goal; it refuses with the reason, else the mobile
-//     lets go of everything but its pivot and the first quarter turn begins.
-//   - middle, resume and end are the motion events; each changes pistons and latches through
-//     Mechanics and announces the turns. At the end the mobile takes the goal cell (World::move,
-//     so the occupancy follows) and its new orientation; pivot and mobile relatch.
+//   - request() judges a motion at once: the mobile must be at rest and free; beyond the run's
+//     limit on concurrent motions the request waits in a queue, in request order. Otherwise, and
+//     when a queued request's turn comes, the motion is judged on the world as it is now: its
+//     pivot at rest and free, its rule holding, nothing it needs held by a motion in progress
+//     (sim/reservations.h), every module of its deformation list compressed, and, with
+//     connectivity on, no module cut off from its piece at any instant of the motion. A refusal
+//     says why, naming the holder and until when. A started motion holds what it needs until it
+//     ends.
+//   - middle, switch, resume and end are the motion events; each changes pistons and latches
+//     through Mechanics and announces the turns. At the end the mobile takes the goal cell
+//     (World::move, so the occupancy follows) and its new orientation; pivot and mobile relatch,
+//     the reservations go, and queued requests get their turn.
 //   - A mobile is latched to its pivot at every instant: the new pair of the hinge latches before
 //     the old one lets go. The invariants (sim/invariants.h) check it after every event.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/result.h"
 #include "geometry/orientation.h"
 #include "motion/motion.h"
+#include "program/move_result.h"
 #include "sim/event_queue.h"
 #include "sim/mechanics.h"
 #include "sim/observer.h"
+#include "sim/reservations.h"
+#include "world/latch_search.h"
 #include "world/world.h"
 
 namespace datomsim::sim {
@@ -33,9 +43,12 @@ namespace datomsim::sim {
 struct ActiveMotion {
   bool active = false;
   motion::Motion plan;
+  Claim claim;          // what it holds
   uint32_t mobile = 0;  // module indices
   uint32_t pivot = 0;
-  int goalAxis = -1;  // G: -R, R or F
+  program::Time start = 0;
+  program::Time until = 0;  // when it ends
+  int goalAxis = -1;        // G: -R, R or F
   // Own connectors of the latched pair before and after the middle.
   int pivotOld = 0, mobileOld = 0, pivotNew = 0, mobileNew = 0;
   bool switched = false;  // the latch has moved to the new pair
@@ -45,6 +58,7 @@ struct ActiveMotion {
   // The hinge's pair of own connectors now, pivot's and mobile's.
   int pivotConnector() const { return switched ? pivotNew : pivotOld; }
   int mobileConnector() const { return switched ? mobileNew : mobileOld; }
+  bool hasDoubleDeformation() const;
 };
 
 struct MotionTimes {
@@ -52,24 +66,41 @@ struct MotionTimes {
   program::Time deformation = 0;  // a piston from rest to compressed, or back
 };
 
+struct MotionLimits {
+  int maxMotions = 0;         // motions in flight at once; 0: no limit
+  bool connectivity = false;  // refuse what would cut modules off from their piece
+};
+
 class MotionExecutor {
  public:
   MotionExecutor(world::World& world, const motion::RuleOptions& rules, Mechanics& mechanics,
-                 EventQueue& agenda, const Announcer& announce, MotionTimes times);
+                 EventQueue& agenda, const Announcer& announce, MotionTimes times,
+                 MotionLimits limits);
 
-  // Starts a mobile's motion, or refuses with the reason.
-  Status start(uint32_t mobileIndex, const motion::Motion& request);
+  // A program asks for a motion of its module (by index).
+  program::MoveResult request(uint32_t mobileIndex, const motion::Motion& motion);
   // The motion events of the motion in `slot`.
   void middle(int slot);
+  void switchPistons(int slot);
   void resume(int slot);
-  // The mobile arrives; returns its index, or the reason it cannot (an invariant violation).
-  Result<uint32_t> end(int slot);
+  // The mobile arrives; then queued requests get their turn.
+  struct Arrival {
+    uint32_t mobile = 0;
+    // Queued requests judged now and refused: their programs hear of it.
+    std::vector<std::pair<uint32_t, program::MoveRefusal>> refused;
+  };
+  // The arrival, or the reason the mobile cannot arrive (an invariant violation).
+  Result<Arrival> end(int slot);
 
   // The motion slot of every module (mobile or pivot of a motion), -1 when in none.
   std::span<const int16_t> motionOf() const { return motionOf_; }
   bool inMotion(uint32_t index) const { return motionOf_[index] >= 0; }
+  bool isQueued(uint32_t index) const;
   // Every slot, active or free (the invariants check the active ones).
   std::span<const ActiveMotion> motions() const { return motions_; }
+  int activeCount() const { return activeCount_; }
+  const Reservations& reservations() const { return reservations_; }
+  const MotionLimits& limits() const { return limits_; }
 
   // The other end of a module's connector when it is the hinge of the module's motion: the
   // partner's index and own connector.
@@ -78,10 +109,22 @@ class MotionExecutor {
     int connector;
   };
   std::optional<HingeEnd> hingePartner(uint32_t index, int ownConnector) const;
+  // The module latched to a module's own latched connector: across a hinge, or facing it.
+  uint32_t latchedBehind(uint32_t index, int ownConnector) const;
+  // The modules that breaking `broken` now would cut off from their piece, counting the latches
+  // that motions in progress will still break (double deformations yet to switch); sorted
+  // indices, empty when nothing splits.
+  std::vector<uint32_t> cutOff(std::vector<world::BrokenLatch> broken) const;
+  // The latches a module's piston would break if compressed now, both ends.
+  std::vector<world::BrokenLatch> latchesMovedBy(uint32_t index, int worldAxis) const;
 
  private:
+  // Judges a request on the world as it is now and starts it, or says why not.
+  program::MoveResult tryStart(uint32_t mobileIndex, const motion::Motion& request);
+  void begin(uint32_t mobileIndex, const motion::Motion& motion, Claim claim);
   // The geometry of the two quarter turns, worked out when the motion starts.
   ActiveMotion plan(const motion::Motion& motion, uint32_t mobileIndex, uint32_t pivotIndex) const;
+  program::MoveRefusal refuse(uint32_t mobileIndex, program::MoveRefusal refusal) const;
   int freeSlot();
 
   world::World& world_;
@@ -90,8 +133,16 @@ class MotionExecutor {
   EventQueue& agenda_;
   const Announcer& announce_;
   MotionTimes times_;
+  MotionLimits limits_;
+  Reservations reservations_;
   std::vector<ActiveMotion> motions_;
+  int activeCount_ = 0;
   std::vector<int16_t> motionOf_;  // by world module index
+  struct Queued {
+    uint32_t mobile;
+    motion::Motion request;
+  };
+  std::deque<Queued> queue_;
 };
 
 }  // namespace datomsim::sim

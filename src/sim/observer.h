@@ -8,6 +8,8 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/module_values.h"
@@ -15,6 +17,7 @@
 #include "geometry/orientation.h"
 #include "motion/motion_values.h"
 #include "program/message.h"
+#include "program/move_result.h"
 #include "sim/event_queue.h"
 #include "world/module.h"
 
@@ -41,11 +44,12 @@ struct PistonMove {
 };
 
 // A motion's mobile starts to move around its pivot; `plan` holds the rule, the cells and the
-// deformation list.
+// deformation list; the motion ends at `until` and holds what it needs till then.
 struct MotionStart {
   ModuleId mobile;
   ModuleId pivot;
   const motion::Motion* plan = nullptr;
+  program::Time until = 0;
 };
 
 // One quarter turn of a mobile about the hinge it shares with its pivot (docs/simulation.md). The
@@ -90,6 +94,15 @@ class Observer {
   virtual void pistonReleased(program::Time /*t*/, ModuleId /*module*/, int /*piston*/) {}
   virtual void latchChanged(program::Time /*t*/, const world::LatchPair& /*pair*/,
                             bool /*latched*/) {}
+  // A program asked for a motion and it waits behind the limit on concurrent motions.
+  virtual void motionQueued(program::Time /*t*/, ModuleId /*mobile*/) {}
+  // A motion request was refused, at once or when its turn came in the queue.
+  virtual void motionRefused(program::Time /*t*/, ModuleId /*mobile*/,
+                             const program::MoveRefusal& /*refusal*/) {}
+  // A program's compression or release was refused; `reason` is a short name
+  // ("piston-busy", "would-disconnect", "held-by-motion", "nothing-compressed").
+  virtual void deformationRefused(program::Time /*t*/, ModuleId /*module*/,
+                                  std::string_view /*reason*/, const std::string& /*text*/) {}
   virtual void motionStarted(program::Time /*t*/, const MotionStart& /*start*/) {}
   virtual void turnStarted(program::Time /*t*/, const QuarterTurn& /*turn*/) {}
   virtual void turnEnded(program::Time /*t*/, const QuarterTurn& /*turn*/) {}

@@ -31,6 +31,8 @@ const char* toString(EventKind kind) {
       return "motion-resume";
     case EventKind::kMotionEnd:
       return "motion-end";
+    case EventKind::kMotionSwitch:
+      return "motion-switch";
   }
   return "?";
 }
@@ -63,18 +65,16 @@ class Simulator::Context final : public program::ModuleContext {
   Status send(int ownConnector, const Message& message) override {
     return simulator_.transport_.send(index_, ownConnector, message);
   }
-  Status compress(int ownPiston) override {
-    return simulator_.mechanics_.compress(index_, ownPiston, simulator_.motions_.inMotion(index_));
-  }
-  Status release() override { return simulator_.mechanics_.release(index_); }
+  Status compress(int ownPiston) override { return simulator_.compress(index_, ownPiston); }
+  Status release() override { return simulator_.release(index_); }
   int compressedPiston() const override { return simulator_.mechanics_.pistons(index_).piston; }
   std::vector<motion::Evaluation> motions() const override {
     return motion::evaluateAll(simulator_.world_, simulator_.table_, {module().cell, module().id},
                                simulator_.options_.rules);
   }
   int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals) const override;
-  Status move(const motion::Motion& motion) override {
-    return simulator_.motions_.start(index_, motion);
+  program::MoveResult move(const motion::Motion& motion) override {
+    return simulator_.motions_.request(index_, motion);
   }
   void setTimer(program::Time delay, int tag) override {
     simulator_.agenda_.schedule(now() + std::max<program::Time>(0, delay), EventKind::kTimer,
@@ -116,7 +116,8 @@ Simulator::Simulator(world::World world, const motion::RuleTable& table, Simulat
       options_(options),
       mechanics_(world_, agenda_, announce_, options.deformationTime),
       motions_(world_, options.rules, mechanics_, agenda_, announce_,
-               {options.quarterTurnTime, options.deformationTime}),
+               {options.quarterTurnTime, options.deformationTime},
+               {options.maxMotions, options.connectivity}),
       transport_(world_, motions_, agenda_, announce_,
                  {options.messageDelay, options.messageJitter}, options.seed),
       programs_(world_.size()) {
@@ -172,11 +173,12 @@ Status Simulator::run(program::Time until) {
   while (!violation_ && !agenda_.empty() && agenda_.top().time <= until) {
     const Event event = agenda_.pop();
     current_ = &event;
-    mechanics_.clearTouched();
+    mechanics_.clearEvent();
+    placed_.clear();
     announce_(&Observer::eventStarted, event.time, event.kind, world_.modules()[event.module].id);
     dispatch(event);
     if (!violation_) {
-      if (auto violation = findViolation(world_, mechanics_, motions_, mechanics_.touched())) {
+      if (auto violation = findViolation(world_, mechanics_, motions_, placed_)) {
         fail(std::move(*violation));
       }
     }
@@ -212,17 +214,73 @@ void Simulator::dispatch(const Event& event) {
     case EventKind::kMotionMiddle:
       motions_.middle(event.argument);
       break;
+    case EventKind::kMotionSwitch:
+      motions_.switchPistons(event.argument);
+      break;
     case EventKind::kMotionResume:
       motions_.resume(event.argument);
       break;
     case EventKind::kMotionEnd: {
-      const Result<uint32_t> arrived = motions_.end(event.argument);
-      if (!arrived.ok()) return fail(arrived.error());
-      Context mobile(*this, *arrived);
-      if (programs_[*arrived]) programs_[*arrived]->onMotionDone(mobile);
+      const auto arrival = motions_.end(event.argument);
+      if (!arrival.ok()) return fail(arrival.error());
+      placed_.push_back(arrival->mobile);
+      Context mobile(*this, arrival->mobile);
+      if (programs_[arrival->mobile]) programs_[arrival->mobile]->onMotionDone(mobile);
+      // Queued requests whose turn came and that were refused: their programs hear of it.
+      for (const auto& [waiting, refusal] : arrival->refused) {
+        Context refused(*this, waiting);
+        if (programs_[waiting]) programs_[waiting]->onMotionRefused(refused, refusal);
+      }
       break;
     }
   }
+}
+
+Status Simulator::compress(uint32_t index, int ownPiston) {
+  const char* busy = motions_.inMotion(index)   ? "during a motion"
+                     : motions_.isQueued(index) ? "while it has a motion queued"
+                                                : nullptr;
+  Status allowed = mechanics_.checkCompress(index, ownPiston, busy);
+  if (allowed.ok() && options_.connectivity) {
+    const int axis = world_.modules()[index].orientation.worldAxis(ownPiston);
+    if (const auto cut = motions_.cutOff(motions_.latchesMovedBy(index, axis)); !cut.empty()) {
+      std::vector<ModuleId> ids;
+      for (const uint32_t i : cut) ids.push_back(world_.modules()[i].id);
+      std::sort(ids.begin(), ids.end());
+      allowed = Error{
+          fmt::format("module {}: cannot compress piston {}: the ensemble would fall "
+                      "apart: {}",
+                      world_.modules()[index].id.value, ownPiston, motion::describeCutOff(ids))};
+      announce_(&Observer::deformationRefused, agenda_.now(), world_.modules()[index].id,
+                "would-disconnect", allowed.error());
+      return allowed;
+    }
+  }
+  if (!allowed.ok()) {
+    announce_(&Observer::deformationRefused, agenda_.now(), world_.modules()[index].id,
+              "piston-busy", allowed.error());
+    return allowed;
+  }
+  mechanics_.compress(index, ownPiston);
+  return Ok{};
+}
+
+Status Simulator::release(uint32_t index) {
+  const ModuleId id = world_.modules()[index].id;
+  // A motion in progress needs the piston: safe by construction, the release waits.
+  if (const auto holder = motions_.reservations().blockerHolder(index)) {
+    Status refused = Error{fmt::format(
+        "module {}: cannot release its piston: the motion of module {} needs it compressed ({})",
+        id.value, holder->mobile.value, untilText(holder->until))};
+    announce_(&Observer::deformationRefused, agenda_.now(), id, "held-by-motion", refused.error());
+    return refused;
+  }
+  Status released = mechanics_.release(index);
+  if (!released.ok()) {
+    announce_(&Observer::deformationRefused, agenda_.now(), id, "nothing-compressed",
+              released.error());
+  }
+  return released;
 }
 
 void Simulator::fail(std::string what) {

@@ -45,6 +45,10 @@ struct SimulationOptions {
   // One of the two quarter turns of a motion.
   program::Time quarterTurnTime = 1000 * program::kMillisecond;
   motion::RuleOptions rules;
+  // Motions in flight at once; requests beyond wait in request order. 0: no limit.
+  int maxMotions = 0;
+  // Refuse a motion or deformation that would cut modules off from their piece of the ensemble.
+  bool connectivity = false;
   // The module the algorithms move. Rules judged by a pivot for an imagined mobile ignore it
   // (it is not part of the fixed world, paper section VII).
   std::optional<ModuleId> mobile;
@@ -99,6 +103,9 @@ class Simulator {
 
   // Hands an event to the part that acts on it, then to the module's program.
   void dispatch(const Event& event);
+  // A program's deformations, through the checks of every part.
+  Status compress(uint32_t index, int ownPiston);
+  Status release(uint32_t index);
   // Stops the run with a violation naming the current event.
   void fail(std::string what);
   uint32_t indexOf(ModuleId id) const;
@@ -117,6 +124,7 @@ class Simulator {
   std::vector<Random> randoms_;
   std::optional<Violation> violation_;
   const Event* current_ = nullptr;
+  std::vector<uint32_t> placed_;  // modules that took a new cell in the current event
 };
 
 }  // namespace datomsim::sim

@@ -2,11 +2,13 @@
 // simulator's announcements like any other.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <map>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -25,6 +27,18 @@ struct Statistics {
   program::Time simulatedTime = 0;
   double wallSeconds = 0;
 
+  // Motions in flight: the most at once, and the motion time summed over all motions.
+  int maxConcurrentMotions = 0;
+  program::Time motionTime = 0;
+  program::Time firstMotionStart = -1;
+  program::Time lastMotionEnd = 0;  // the makespan: from the run's start to the last arrival
+  // Refused requests by reason: a motion's (program::toString(MoveRefusal::Reason)), or a
+  // deformation's, prefixed "deformation-".
+  std::map<std::string, uint64_t, std::less<>> refusalsByReason;
+  // Time modules spent waiting for what other motions held: from a request queued or refused
+  // for a reservation (cell-reserved, module-busy) to that module's next start.
+  program::Time reservationWait = 0;
+
   uint64_t events() const {
     uint64_t total = 0;
     for (const uint64_t n : eventsByKind) total += n;
@@ -34,6 +48,11 @@ struct Statistics {
     uint64_t total = 0;
     for (const auto& [name, n] : messagesByType) total += n;
     return total;
+  }
+  // The mean number of motions in flight between the first start and the last arrival.
+  double meanConcurrentMotions() const {
+    const program::Time span = lastMotionEnd - firstMotionStart;
+    return firstMotionStart < 0 || span <= 0 ? 0.0 : double(motionTime) / double(span);
   }
 };
 
@@ -52,7 +71,34 @@ class StatisticsRecorder final : public Observer {
   }
   void pistonCompressed(program::Time, ModuleId, int) override { ++statistics_.deformations; }
   void pistonReleased(program::Time, ModuleId, int) override { ++statistics_.deformations; }
-  void motionEnded(program::Time, const MotionEnd&) override { ++statistics_.motions; }
+  void motionQueued(program::Time t, ModuleId mobile) override { startWaiting(t, mobile); }
+  void motionRefused(program::Time t, ModuleId mobile,
+                     const program::MoveRefusal& refusal) override {
+    ++statistics_.refusalsByReason[std::string(program::toString(refusal.reason))];
+    if (refusal.reason == program::MoveRefusal::Reason::kCellReserved ||
+        refusal.reason == program::MoveRefusal::Reason::kModuleBusy) {
+      startWaiting(t, mobile);
+    }
+  }
+  void deformationRefused(program::Time, ModuleId, std::string_view reason,
+                          const std::string&) override {
+    ++statistics_.refusalsByReason["deformation-" + std::string(reason)];
+  }
+  void motionStarted(program::Time t, const MotionStart& start) override {
+    if (statistics_.firstMotionStart < 0) statistics_.firstMotionStart = t;
+    statistics_.motionTime += start.until - t;
+    statistics_.maxConcurrentMotions = std::max(statistics_.maxConcurrentMotions, ++inFlight_);
+    if (const auto waiting = waitingSince_.find(start.mobile.value);
+        waiting != waitingSince_.end()) {
+      statistics_.reservationWait += t - waiting->second;
+      waitingSince_.erase(waiting);
+    }
+  }
+  void motionEnded(program::Time t, const MotionEnd&) override {
+    ++statistics_.motions;
+    --inFlight_;
+    statistics_.lastMotionEnd = t;
+  }
 
   // A run of the event loop is over at simulated time `now`, after `wallSeconds`.
   void runEnded(program::Time now, double wallSeconds) {
@@ -74,8 +120,14 @@ class StatisticsRecorder final : public Observer {
     return counter;
   }
 
+  void startWaiting(program::Time t, ModuleId mobile) {
+    waitingSince_.try_emplace(mobile.value, t);
+  }
+
   Statistics statistics_;
   std::vector<std::pair<const char*, uint64_t*>> counters_;
+  int inFlight_ = 0;
+  std::unordered_map<uint32_t, program::Time> waitingSince_;  // by module id
 };
 
 }  // namespace datomsim::sim

@@ -106,7 +106,7 @@ struct Stage {
 TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
   const Stage stage;
   std::map<uint32_t, Script> programs;
-  Status started = Error{"not started"};
+  std::optional<program::MoveResult> started;
   bool done = false;
   programs[2].start = [&](ModuleContext& c) {
     for (const motion::Evaluation& e : c.motions()) {
@@ -120,7 +120,7 @@ TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
   simulator.startAll();
   const Status status = simulator.run();
   ASSERT_TRUE(status.ok()) << status.error();
-  ASSERT_TRUE(started.ok()) << started.error();
+  ASSERT_TRUE(started && started->ok()) << (started ? started->error() : "not asked");
   ASSERT_TRUE(done);
   const world::Module& mobile = *simulator.world().find(ModuleId{2});
   EXPECT_EQ(mobile.cell, stage.pivot + stage.rule.goalOffset);
@@ -135,7 +135,7 @@ TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
 TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
   const Stage stage;
   std::map<uint32_t, Script> programs;
-  Status started = Ok{};
+  std::optional<program::MoveResult> started;
   programs[2].start = [&](ModuleContext& c) {
     // A motion listed when the goal was free, asked for after the world changed.
     motion::Motion stale;
@@ -153,8 +153,10 @@ TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
-  ASSERT_FALSE(started.ok());
-  EXPECT_NE(started.error().find("the goal"), std::string::npos) << started.error();
+  ASSERT_TRUE(started.has_value());
+  ASSERT_FALSE(started->ok());
+  EXPECT_EQ(started->refusal().reason, program::MoveRefusal::Reason::kRule);
+  EXPECT_NE(started->error().find("the goal"), std::string::npos) << started->error();
   EXPECT_EQ(simulator.world().find(ModuleId{2})->cell, stage.mobile);
 }
 
@@ -173,7 +175,7 @@ TEST(Simulator, AMotionWhoseBlockingModuleHasNotCompressedIsRefused) {
   const BlockedStage stage;
   ASSERT_EQ(stage.rule.cells[2].role, motion::CellRole::kC);
   std::map<uint32_t, Script> programs;
-  Status started = Ok{};
+  std::optional<program::MoveResult> started;
   programs[2].start = [&](ModuleContext& c) {
     for (const motion::Evaluation& e : c.motions()) {
       const auto* m = std::get_if<motion::Motion>(&e);
@@ -184,19 +186,22 @@ TEST(Simulator, AMotionWhoseBlockingModuleHasNotCompressedIsRefused) {
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
-  ASSERT_FALSE(started.ok());
-  EXPECT_NE(started.error().find("must compress"), std::string::npos) << started.error();
+  ASSERT_TRUE(started.has_value());
+  ASSERT_FALSE(started->ok());
+  EXPECT_EQ(started->refusal().reason, program::MoveRefusal::Reason::kBlockerNotReady);
+  EXPECT_NE(started->error().find("must compress"), std::string::npos) << started->error();
 }
 
-TEST(Simulator, ReleasingWhileTheMobilePassesStopsTheRunWithAReport) {
+TEST(Simulator, ReleasingAPistonAMotionNeedsIsRefusedNamingTheMotion) {
   const BlockedStage stage;
   std::map<uint32_t, Script> programs;
-  // The blocker compresses at once and, badly, lets go half-way through the motion.
+  // The blocker compresses at once and tries to let go half-way through the motion.
+  std::optional<Status> released;
   programs[3].start = [&](ModuleContext& c) {
     ASSERT_TRUE(c.compress(c.orientation().ownPiston(stage.rule.right)).ok());
   };
   programs[3].deformed = [](ModuleContext& c) { c.setTimer(program::kSecond, 0); };
-  programs[3].timer = [](ModuleContext& c, int) { ASSERT_TRUE(c.release().ok()); };
+  programs[3].timer = [&](ModuleContext& c, int) { released = c.release(); };
   programs[2].start = [](ModuleContext& c) { c.setTimer(600 * program::kMillisecond, 0); };
   programs[2].timer = [&](ModuleContext& c, int) {
     for (const motion::Evaluation& e : c.motions()) {
@@ -210,11 +215,14 @@ TEST(Simulator, ReleasingWhileTheMobilePassesStopsTheRunWithAReport) {
   simulator.install(scripts(programs));
   simulator.startAll();
   const Status status = simulator.run();
-  ASSERT_FALSE(status.ok());
-  ASSERT_TRUE(simulator.violation().has_value());
-  EXPECT_EQ(simulator.violation()->module, ModuleId{3});
-  EXPECT_NE(status.error().find("let go of its piston"), std::string::npos) << status.error();
-  EXPECT_NE(status.error().find("event #"), std::string::npos);
+  ASSERT_TRUE(status.ok()) << status.error();
+  ASSERT_TRUE(released.has_value());
+  ASSERT_FALSE(released->ok());
+  // The motion started at 0.6 s and ends at 2.6 s.
+  EXPECT_EQ(released->error(),
+            "module 3: cannot release its piston: the motion of module 2 needs it compressed "
+            "(until 2.6 s)");
+  EXPECT_EQ(simulator.statistics().motions, 1u);
 }
 
 }  // namespace

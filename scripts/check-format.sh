@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 mkdir -p build
 mapfile -t files < <(git ls-files '*.cpp' '*.h')
 if ! clang-format --dry-run --Werror "${files[@]}" 2> build/format.log; then
-  X | head -20 >&2
+  grep -E "^[^ ].*(warning|error)" build/format.log | head -20 >&2
   rm -f build/format.log
   echo "check-format: run clang-format -i on the files above" >&2
   exit 1

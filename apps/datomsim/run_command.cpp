@@ -17,7 +17,19 @@ std::string runJson(const std::string& program, const experiment::RunResult& res
   auto seconds = [](program::Time t) { return double(t) / program::kSecond; };
   nlohmann::ordered_json out;
   out["program"] = program;
-  if (!algorithms::programInfo(program)->mobileWalks) {
+  const algorithms::ProgramInfo info = *algorithms::programInfo(program);
+  if (!info.needsGoal) {
+    nlohmann::ordered_json walkers = nlohmann::ordered_json::array();
+    for (const algorithms::WalkerOutcome& walker : result.walkers) {
+      walkers.push_back({{"id", walker.id.value},
+                         {"steps", walker.steps},
+                         {"refusals", walker.refusals},
+                         {"finished", walker.finished},
+                         {"failure", walker.failure ? nlohmann::ordered_json(*walker.failure)
+                                                    : nlohmann::ordered_json()}});
+    }
+    out["walkers"] = std::move(walkers);
+  } else if (!info.mobileWalks) {
     // Exactly as `reach` writes its distances.
     nlohmann::ordered_json distances = nlohmann::ordered_json::array();
     for (const auto& [cell, d] : result.distances) distances.push_back({cell.x, cell.y, cell.z, d});
@@ -103,7 +115,7 @@ void addRunCommand(CLI::App& app) {
   command->add_option("--program", args->program, summaries)
       ->required()
       ->check(CLI::IsMember(names));
-  command->add_option("--goal", args->goal, "Goal cell x,y,z")->required();
+  command->add_option("--goal", args->goal, "Goal cell x,y,z (the gradient's programs)");
   command->add_option("--start", args->start,
                       "The mobile's start x,y,z: the module there, else the one at the goal moved "
                       "there, else a new module");
@@ -131,7 +143,7 @@ void addRunCommand(CLI::App& app) {
   command->callback([args] {
     experiment::RunRequest request;
     request.program = args->program;
-    request.goal = parseCell("--goal", args->goal);
+    if (!args->goal.empty()) request.goal = parseCell("--goal", args->goal);
     if (!args->start.empty()) request.start = parseCell("--start", args->start);
     request.simulation.rules = args->rules.options();
     request.simulation.connectivity = request.simulation.rules.connectivity;

@@ -11,24 +11,77 @@
 #include "scene/box.h"
 #include "scene/paper_arch.h"
 #include "scene/random_scene.h"
+#include "target/target.h"
 
 namespace datomsim::app {
 namespace {
 
-// The subcommands of `generate` share the output option.
+// The options every subcommand of `generate` shares: the output, and the targets to attach.
+struct GenerateArguments {
+  std::string out;
+  // Scene files whose targets the generated scene takes (their modules are ignored).
+  std::vector<std::string> targetFiles;
+  // A grid target of a box of cells: size and corner cell.
+  std::string targetBox, targetOrigin = "0,0,0";
+};
+
 CLI::App* addGenerator(CLI::App& generate, const std::string& name, const std::string& help,
-                       std::string& out) {
+                       GenerateArguments& args) {
   CLI::App* command = generate.add_subcommand(name, help);
-  command->add_option("-o,--out", out, "Scene file to write (.xml or .json)")->required();
+  command->add_option("-o,--out", args.out, "Scene file to write (.xml or .json)")->required();
+  command->add_option("--target", args.targetFiles,
+                      "Attach the targets of this scene file (.xml or .json; its modules are "
+                      "ignored); may be repeated");
+  CLI::Option* box = command->add_option(
+      "--target-box", args.targetBox,
+      "Attach a grid target: the box of X,Y,Z cells from --target-origin, x fastest");
+  command->add_option("--target-origin", args.targetOrigin, "Corner cell x,y,z of --target-box")
+      ->capture_default_str()
+      ->needs(box);
   return command;
 }
 
-void writeGenerated(world::World world, const std::string& name, const std::string& out) {
+// The grid target of a box, cells in the order scene::box numbers its modules.
+target::Target boxTarget(const GenerateArguments& args) {
+  const geometry::Cell size = parseCell("--target-box", args.targetBox);
+  const geometry::Cell origin = parseCell("--target-origin", args.targetOrigin);
+  if (size.x <= 0 || size.y <= 0 || size.z <= 0) {
+    throw UsageError("--target-box \"" + args.targetBox + "\" must be three positive integers");
+  }
+  const int64_t count = int64_t{size.x} * size.y * size.z;
+  if (count > int64_t(target::kMaxListedCells)) {
+    throw UsageError(fmt::format("--target-box \"{}\" holds {} cells, more than {}", args.targetBox,
+                                 count, target::kMaxListedCells));
+  }
+  for (const int64_t high :
+       {int64_t{origin.x} + size.x, int64_t{origin.y} + size.y, int64_t{origin.z} + size.z}) {
+    if (high - 1 > INT32_MAX) throw UsageError("--target-box leaves the 32-bit cell range");
+  }
+  std::vector<geometry::Cell> cells;
+  cells.reserve(size_t(count));
+  for (int32_t z = 0; z < size.z; ++z) {
+    for (int32_t y = 0; y < size.y; ++y) {
+      for (int32_t x = 0; x < size.x; ++x) cells.push_back(origin + geometry::Cell{x, y, z});
+    }
+  }
+  return unwrap(target::Target::grid(cells));
+}
+
+void writeGenerated(world::World world, const std::string& name, const GenerateArguments& args) {
   io::Scene scene;
   scene.world = std::move(world);
   scene.name = name;
-  check(io::writeScene(scene, out));
-  fmt::print(stderr, "wrote {} ({} modules)\n", out, scene.world.size());
+  for (const std::string& file : args.targetFiles) {
+    io::Scene source = unwrap(io::readScene(file));
+    if (source.targets.empty()) throw UsageError(file + ": has no targets to attach (--target)");
+    for (target::Target& target : source.targets) scene.targets.push_back(std::move(target));
+  }
+  if (!args.targetBox.empty()) scene.targets.push_back(boxTarget(args));
+  check(io::writeScene(scene, args.out));
+  fmt::print(stderr, "wrote {} ({} modules{})\n", args.out, scene.world.size(),
+             scene.targets.empty() ? ""
+                                   : fmt::format(", {} target{}", scene.targets.size(),
+                                                 scene.targets.size() == 1 ? "" : "s"));
 }
 
 void addGenerate(CLI::App& app) {
@@ -36,10 +89,11 @@ void addGenerate(CLI::App& app) {
   generate->require_subcommand(1);
 
   struct BoxArguments {
-    std::string size, origin = "0,0,0", grid, out;
+    std::string size, origin = "0,0,0", grid;
+    GenerateArguments generate;
   };
   auto box = std::make_shared<BoxArguments>();
-  CLI::App* boxCommand = addGenerator(*generate, "box", "A box of modules", box->out);
+  CLI::App* boxCommand = addGenerator(*generate, "box", "A box of modules", box->generate);
   boxCommand->add_option("--size", box->size, "Size X,Y,Z in cells")->required();
   boxCommand->add_option("--origin", box->origin, "Corner cell x,y,z")->capture_default_str();
   boxCommand->add_option("--grid", box->grid, "Declare a grid X,Y,Z (default: none)");
@@ -48,23 +102,23 @@ void addGenerate(CLI::App& app) {
     options.origin = parseCell("--origin", box->origin);
     if (!box->grid.empty()) options.gridSize = parseCell("--grid", box->grid);
     const geometry::Cell size = parseCell("--size", box->size);
-    writeGenerated(unwrap(scene::box(size, options)), "box " + box->size, box->out);
+    writeGenerated(unwrap(scene::box(size, options)), "box " + box->size, box->generate);
   });
 
   struct ArchArguments {
     int hole = 2;
-    std::string out;
+    GenerateArguments generate;
   };
   auto arch = std::make_shared<ArchArguments>();
-  CLI::App* archCommand =
-      addGenerator(*generate, "arch",
-                   "The paper's experiment: a 7x7x2 box under an arch (section VII)", arch->out);
+  CLI::App* archCommand = addGenerator(
+      *generate, "arch", "The paper's experiment: a 7x7x2 box under an arch (section VII)",
+      arch->generate);
   archCommand->add_option("--hole", arch->hole, "Height of the arch's hole: 2 or 1")
       ->check(CLI::IsMember({1, 2}))
       ->capture_default_str();
   archCommand->callback([arch] {
     writeGenerated(unwrap(scene::paperArch(arch->hole)),
-                   fmt::format("paper arch, hole {} high", arch->hole), arch->out);
+                   fmt::format("paper arch, hole {} high", arch->hole), arch->generate);
   });
 
   struct RandomArguments {
@@ -73,11 +127,12 @@ void addGenerate(CLI::App& app) {
     std::string grid;
     int height = 3;
     bool orientations = false;
-    std::string out;
+    GenerateArguments generate;
   };
   auto random = std::make_shared<RandomArguments>();
-  CLI::App* randomCommand = addGenerator(
-      *generate, "random", "A random connected scene grown on the ground from a seed", random->out);
+  CLI::App* randomCommand =
+      addGenerator(*generate, "random", "A random connected scene grown on the ground from a seed",
+                   random->generate);
   randomCommand->add_option("--seed", random->seed, "Seed")->capture_default_str();
   randomCommand->add_option("--count", random->count, "Number of modules")
       ->check(CLI::PositiveNumber)
@@ -94,7 +149,7 @@ void addGenerate(CLI::App& app) {
     options.maxHeight = random->height;
     options.randomOrientations = random->orientations;
     writeGenerated(unwrap(scene::random(random->seed, random->count, options)),
-                   fmt::format("random, seed {}", random->seed), random->out);
+                   fmt::format("random, seed {}", random->seed), random->generate);
   });
 }
 
@@ -140,14 +195,34 @@ size_t countComponents(const world::World& world) {
   return components;
 }
 
+// What `info` reports of a target: a later command that needs the cell count to equal the
+// module count refuses then, not here.
+struct TargetSummary {
+  std::string format;
+  size_t cells = 0;
+  size_t filled = 0;
+};
+
+std::vector<TargetSummary> summarizeTargets(const io::Scene& scene, const std::string& path) {
+  std::vector<TargetSummary> summaries;
+  for (size_t i = 0; i < scene.targets.size(); ++i) {
+    const target::Target& target = scene.targets[i];
+    const Result<size_t> cells = target.count();
+    if (!cells) throw UsageError(fmt::format("{}: targets[{}]: {}", path, i, cells.error()));
+    summaries.push_back(
+        {std::string(target::formatName(target.format())), *cells, target.filledIn(scene.world)});
+  }
+  return summaries;
+}
+
 void addInfo(CLI::App& app) {
   struct Arguments {
     std::string scene;
     bool json = false;
   };
   auto args = std::make_shared<Arguments>();
-  CLI::App* command =
-      app.add_subcommand("info", "Module count, bounds and connected components of a scene");
+  CLI::App* command = app.add_subcommand(
+      "info", "Module count, bounds, connected components and targets of a scene");
   command->add_option("scene", args->scene, "Scene file (.xml or .json)")->required();
   command->add_flag("--json", args->json, "Print one JSON object");
   command->callback([args] {
@@ -173,6 +248,14 @@ void addInfo(CLI::App& app) {
     const auto& grid = world.bounds().gridSize;
     out["grid"] =
         grid ? nlohmann::ordered_json{grid->x, grid->y, grid->z} : nlohmann::ordered_json();
+    const std::vector<TargetSummary> targets = summarizeTargets(scene, args->scene);
+    out["targets"] = nlohmann::ordered_json::array();
+    for (const TargetSummary& target : targets) {
+      out["targets"].push_back({{"format", target.format},
+                                {"cells", target.cells},
+                                {"filled", target.filled},
+                                {"cells_equal_modules", target.cells == world.size()}});
+    }
     if (args->json) {
       fmt::print("{}\n", out.dump());
       return;
@@ -183,6 +266,14 @@ void addInfo(CLI::App& app) {
       fmt::print("cells       {} .. {}\n", geometry::toString(low), geometry::toString(high));
     }
     fmt::print("grid        {}\n", grid ? geometry::toString(*grid) : "none (ground only)");
+    for (size_t i = 0; i < targets.size(); ++i) {
+      const TargetSummary& target = targets[i];
+      fmt::print("{:<12}{}, {} cells, {} filled; {}\n", fmt::format("target {}", i), target.format,
+                 target.cells, target.filled,
+                 target.cells == world.size()
+                     ? "as many cells as modules"
+                     : fmt::format("{} cells for {} modules", target.cells, world.size()));
+    }
   });
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "algorithms/follow_gradient.h"
+#include "algorithms/walkers.h"
 
 namespace datomsim::algorithms {
 
@@ -20,7 +21,7 @@ class TypedPrograms final : public ProgramSet {
   }
 
   std::unique_ptr<program::ModuleProgram> make(ModuleId id) override {
-    auto program = std::make_unique<Program>(parameters_);
+    auto program = makeProgram();
     made_.push_back({id, program.get()});
     return program;
   }
@@ -28,11 +29,13 @@ class TypedPrograms final : public ProgramSet {
   std::vector<std::pair<geometry::Cell, int>> distances(
       const std::function<geometry::Cell(ModuleId)>& cellOf) const override {
     std::map<geometry::Cell, int> smallest;
-    for (const auto& [id, program] : made_) {
-      if (id == parameters_.mobile) continue;
-      for (const auto& [cell, distance] : program->knownDistances(cellOf(id))) {
-        auto [it, inserted] = smallest.emplace(cell, distance);
-        if (!inserted) it->second = std::min(it->second, int(distance));
+    if constexpr (kGradient) {
+      for (const auto& [id, program] : made_) {
+        if (id == parameters_.mobile) continue;
+        for (const auto& [cell, distance] : program->knownDistances(cellOf(id))) {
+          auto [it, inserted] = smallest.emplace(cell, distance);
+          if (!inserted) it->second = std::min(it->second, int(distance));
+        }
       }
     }
     return {smallest.begin(), smallest.end()};
@@ -54,14 +57,40 @@ class TypedPrograms final : public ProgramSet {
     }
   }
 
+  std::vector<WalkerOutcome> walkers() const override {
+    std::vector<WalkerOutcome> outcomes;
+    if constexpr (std::is_same_v<Program, WalkerProgram>) {
+      for (const auto& [id, program] : made_) {
+        if (!program->walks()) continue;
+        outcomes.push_back(
+            {id, program->steps(), program->refusals(), program->finished(), program->failure()});
+      }
+    }
+    return outcomes;
+  }
+
   std::optional<std::pair<ModuleId, std::string>> failure() const override {
     for (const auto& [id, program] : made_) {
-      if (id != parameters_.mobile && program->failure()) return std::pair{id, *program->failure()};
+      // A walker's failure is an outcome of the walk (walkers()), not a failed run.
+      if constexpr (kGradient) {
+        if (id != parameters_.mobile && program->failure()) {
+          return std::pair{id, *program->failure()};
+        }
+      }
     }
     return std::nullopt;
   }
 
  private:
+  static constexpr bool kGradient = std::is_base_of_v<GradientProgram, Program>;
+
+  std::unique_ptr<Program> makeProgram() const {
+    if constexpr (kGradient) {
+      return std::make_unique<Program>(parameters_);
+    } else {
+      return std::make_unique<Program>();
+    }
+  }
   GradientParameters parameters_;
   std::vector<std::pair<ModuleId, const Program*>> made_;  // in the order made: increasing id
 };
@@ -77,11 +106,16 @@ struct Entry {
 };
 
 const std::array kEntries = {
-    Entry{{kGradient, "the distributed gradient: every cell's distance to the goal", false},
+    Entry{{kGradient, "the distributed gradient: every cell's distance to the goal", true, false},
           make<GradientProgram>},
     Entry{{kFollowGradient, "the gradient, then the mobile follows it from the start (Algorithm 1)",
-           true},
+           true, true},
           make<FollowGradientProgram>},
+    Entry{{kWalkers,
+           "every module above the ground layer walks to and fro over the floor, all at once "
+           "(a test of concurrent motions)",
+           false, false},
+          make<WalkerProgram>},
 };
 
 const std::array<ProgramInfo, kEntries.size()> kPrograms = [] {

@@ -21,10 +21,13 @@ namespace datomsim::algorithms {
 // The names, spelled here only.
 inline constexpr std::string_view kGradient = "gradient";
 inline constexpr std::string_view kFollowGradient = "follow-gradient";
+inline constexpr std::string_view kWalkers = "walkers";
 
 struct ProgramInfo {
   std::string_view name;
   std::string_view summary;  // one line, for --help
+  // The program needs a goal cell (--goal).
+  bool needsGoal = true;
   // The mobile walks from a start cell: the driver needs --start, and triggers the mobile once
   // the gradient has settled.
   bool mobileWalks = false;
@@ -41,6 +44,15 @@ struct MobileOutcome {
   bool arrived = false;
   std::optional<std::string> failure;  // why the mobile stopped
   std::string wait;                    // what it waited for when the run ended
+};
+
+// How one walker of the walkers program fared.
+struct WalkerOutcome {
+  ModuleId id;
+  int steps = 0;
+  int refusals = 0;
+  bool finished = false;
+  std::optional<std::string> failure;
 };
 
 // The programs of one run: makes each module's program and keeps a typed handle on it, so that
@@ -62,6 +74,8 @@ class ProgramSet {
       const std::function<geometry::Cell(ModuleId)>& cellOf) const = 0;
   // The mobile's walk, for programs where it walks.
   virtual std::optional<MobileOutcome> mobile() const = 0;
+  // Every walker, by increasing id, for the walkers program.
+  virtual std::vector<WalkerOutcome> walkers() const { return {}; }
   // The first module other than the mobile whose program gave up (a refused compression, say),
   // in increasing id order, with its reason: as much a failed run as a stuck mobile.
   virtual std::optional<std::pair<ModuleId, std::string>> failure() const = 0;

@@ -17,9 +17,10 @@ constexpr Color kMobileGreen{64, 255, 64};
 
 // Puts the mobile where the request says and returns its id.
 Result<ModuleId> placeMobile(world::World& world, const RunRequest& request) {
-  const Cell home = request.start.value_or(request.goal);
+  const Cell goal = *request.goal;
+  const Cell home = request.start.value_or(goal);
   if (const world::Module* atStart = world.moduleAt(home)) return atStart->id;
-  if (const world::Module* atGoal = world.moduleAt(request.goal)) {
+  if (const world::Module* atGoal = world.moduleAt(goal)) {
     const ModuleId id = atGoal->id;
     const Status moved = world.move(id, home);
     if (!moved.ok()) return Error{"cannot move the mobile to the start: " + moved.error()};
@@ -47,33 +48,43 @@ std::string summaryJson(const sim::Statistics& statistics) {
 
 Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
                              const RunRequest& request) {
-  if (!world.isInside(request.goal)) {
-    return Error{"goal " + toString(request.goal) + " is outside the world"};
+  const auto info = algorithms::programInfo(request.program);
+  if (!info.ok()) return Error{info.error()};
+  if (info->needsGoal && !request.goal) {
+    return Error{std::string(info->name) + " needs a goal cell (--goal)"};
+  }
+  if (request.goal && !world.isInside(*request.goal)) {
+    return Error{"goal " + toString(*request.goal) + " is outside the world"};
   }
   if (request.start && !world.isInside(*request.start)) {
     return Error{"start " + toString(*request.start) + " is outside the world"};
   }
-  const auto info = algorithms::programInfo(request.program);
-  if (!info.ok()) return Error{info.error()};
   if (info->mobileWalks && !request.start) {
     return Error{std::string(info->name) + " needs a start cell (--start)"};
   }
 
-  auto mobile = placeMobile(world, request);
-  if (!mobile.ok()) return Error{mobile.error()};
-  if (const world::Module* atGoal = world.moduleAt(request.goal); atGoal && atGoal->id != *mobile) {
-    return Error{fmt::format("goal {} holds module {}, which is not the mobile",
-                             toString(request.goal), atGoal->id.value)};
+  // The gradient's programs have a goal and a mobile; the others run on the scene as it is.
+  std::optional<ModuleId> mobile;
+  if (info->needsGoal) {
+    auto placed = placeMobile(world, request);
+    if (!placed.ok()) return Error{placed.error()};
+    mobile = *placed;
+    if (const world::Module* atGoal = world.moduleAt(*request.goal);
+        atGoal && atGoal->id != *mobile) {
+      return Error{fmt::format("goal {} holds module {}, which is not the mobile",
+                               toString(*request.goal), atGoal->id.value)};
+    }
   }
   world.latchAllNeighbours();
 
-  auto programs = algorithms::makePrograms(request.program, {request.goal, *mobile}, world.size());
+  auto programs = algorithms::makePrograms(
+      request.program, {request.goal.value_or(Cell{}), mobile.value_or(ModuleId{})}, world.size());
   if (!programs.ok()) return Error{programs.error()};
 
   sim::SimulationOptions options = request.simulation;
-  options.mobile = *mobile;
+  options.mobile = mobile;
   record::TraceWriter trace;
-  if (request.trace) trace.header(world, request.description);
+  if (request.trace) trace.header(world, request.description, request.targets);
   sim::Simulator simulator(std::move(world), table, options);
   if (request.trace) simulator.subscribe(&trace);
   simulator.install((*programs)->factory());
@@ -88,7 +99,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   if (!status.ok()) return Error{status.error()};
 
   RunResult result;
-  result.mobile = *mobile;
+  result.mobile = mobile.value_or(ModuleId{});
   result.statistics = simulator.statistics();
   const world::World& ended = simulator.world();
   result.distances = (*programs)->distances([&](ModuleId id) { return ended.find(id)->cell; });
@@ -99,11 +110,12 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   if (const auto walk = (*programs)->mobile()) {
     if (walk->failure) return Error{"the mobile stopped: " + *walk->failure};
     if (!walk->arrived) {
-      return Error{fmt::format("the mobile did not reach the goal {}: {}", toString(request.goal),
+      return Error{fmt::format("the mobile did not reach the goal {}: {}", toString(*request.goal),
                                walk->wait)};
     }
     result.path = walk->path;
   }
+  result.walkers = (*programs)->walkers();
   if (request.trace) {
     trace.footer(simulator.now(), summaryJson(result.statistics));
     result.trace = trace.text();

@@ -23,11 +23,14 @@ namespace datomsim::experiment {
 
 struct RunRequest {
   std::string program{algorithms::kGradient};
-  geometry::Cell goal;
+  // The gradient's goal; programs that have none (walkers) run without.
+  std::optional<geometry::Cell> goal;
   std::optional<geometry::Cell> start;
   sim::SimulationOptions simulation;
   bool trace = false;
   std::string description;
+  // The cells of the scene's target shapes, for the trace's viewer.
+  std::vector<std::vector<geometry::Cell>> targets;
 };
 
 struct RunResult {
@@ -36,6 +39,8 @@ struct RunResult {
   std::vector<std::pair<geometry::Cell, int>> distances;
   // follow-gradient: the mobile's cells from start to goal.
   std::vector<geometry::Cell> path;
+  // walkers: how each walker fared.
+  std::vector<algorithms::WalkerOutcome> walkers;
   sim::Statistics statistics;
   std::string trace;  // JSON Lines, when asked for
 };

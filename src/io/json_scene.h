@@ -1,7 +1,8 @@
 // The project's own scene format: versioned JSON, documented in docs/file-formats.md.
 //
 //   {"format": "datomsim-scene", "version": 1, "grid": [X,Y,Z] or null, "blockSize": [10,10,10],
-//    "modules": [{"id":1,"cell":[x,y,z],"orientation":o,"color":[r,g,b]}, ...]}
+//    "modules": [{"id":1,"cell":[x,y,z],"orientation":o,"color":[r,g,b]}, ...],
+//    "targets": [{"format":"grid","cells":[[x,y,z], ...]}, {"format":"csg","content":"..."}]}
 //
 // Built for millions of modules: the writer streams the modules array one module per line, and the
 // reader is a SAX handler that never holds the document as a tree. Output is deterministic (the

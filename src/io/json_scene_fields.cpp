@@ -17,16 +17,15 @@
 
 namespace datomsim::io::detail {
 
-namespace {
-
 using geometry::Cell;
 
-// A value for an error message, cut short when long.
 std::string brief(const Json& value) {
   std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
   if (text.size() > 60) text = text.substr(0, 57) + "...";
   return text;
 }
+
+namespace {
 
 std::optional<int64_t> integerIn(const Json& value, int64_t low, int64_t high) {
   if (value.is_number_unsigned()) {
@@ -45,24 +44,13 @@ std::optional<int64_t> integerIn(const Json& value, int64_t low, int64_t high) {
   return std::nullopt;
 }
 
-// Three integers in [low, high], or nullopt.
-std::optional<std::array<int64_t, 3>> threeIntegers(const Json& value, int64_t low, int64_t high) {
-  if (!value.is_array() || value.size() != 3) return std::nullopt;
-  std::array<int64_t, 3> result{};
-  for (size_t i = 0; i < 3; ++i) {
-    const auto v = integerIn(value[i], low, high);
-    if (!v) return std::nullopt;
-    result[i] = *v;
-  }
-  return result;
-}
-
 constexpr int64_t kInt32Min = std::numeric_limits<int32_t>::min();
 constexpr int64_t kInt32Max = std::numeric_limits<int32_t>::max();
 
 // Top-level and module keys, as bits for "seen" sets.
-constexpr std::array<std::string_view, 8> kTopKeys = {
-    "format", "version", "name", "description", "grid", "blockSize", "visiblesim", "modules"};
+constexpr std::array<std::string_view, 9> kTopKeys = {"format",      "version", "name",
+                                                      "description", "grid",    "blockSize",
+                                                      "visiblesim",  "modules", "targets"};
 constexpr std::array<std::string_view, 4> kModuleKeys = {"id", "cell", "orientation", "color"};
 
 template <size_t N>
@@ -80,8 +68,24 @@ bool has(uint32_t seen, const std::array<std::string_view, N>& keys, std::string
 
 }  // namespace
 
+std::optional<std::array<int64_t, 3>> threeIntegers(const Json& value, int64_t low, int64_t high) {
+  if (!value.is_array() || value.size() != 3) return std::nullopt;
+  std::array<int64_t, 3> result{};
+  for (size_t i = 0; i < 3; ++i) {
+    const auto v = integerIn(value[i], low, high);
+    if (!v) return std::nullopt;
+    result[i] = *v;
+  }
+  return result;
+}
+
 bool SceneHandler::key(Json::string_t& name) {
   if (capturing_) {
+    // Inside a captured value (targets, visiblesim) a repeated key would silently replace the
+    // first; refuse it as everywhere else.
+    if (captureStack_.back()->contains(name)) {
+      return fail(key_, fmt::format("duplicate key \"{}\"", name));
+    }
     captureKey_ = name;
     return true;
   }
@@ -208,6 +212,8 @@ bool SceneHandler::topField() {
     return readVisibleSim(v);
   } else if (key_ == "modules") {
     return fail("modules", "expected an array of modules, got " + brief(v));
+  } else if (key_ == "targets") {
+    return readTargets(v);
   }
   return true;
 }

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -25,6 +26,12 @@ using Json = nlohmann::ordered_json;
 
 // Where the handler is in the document, outside captured values.
 enum class Place { kStart, kTop, kModules, kModule, kEnd };
+
+// A value for an error message, cut short when long.
+std::string brief(const Json& value);
+
+// Three integers in [low, high], or nullopt.
+std::optional<std::array<int64_t, 3>> threeIntegers(const Json& value, int64_t low, int64_t high);
 
 struct PendingModule {
   world::Module module;
@@ -81,6 +88,13 @@ class SceneHandler {
   bool dispatch();
   bool topField();
   bool readVisibleSim(const Json& v);
+  // The "targets" array (json_scene_targets.cpp).
+  bool readTargets(const Json& v);
+  std::optional<target::Target> readTarget(const Json& v, const std::string& path);
+  std::optional<target::Target> readGridTarget(const Json& v, const std::string& path,
+                                               std::optional<Color> color);
+  std::optional<target::Target> readCsgTarget(const Json& v, const std::string& path,
+                                              std::optional<Color> color);
   bool moduleField();
   bool finishModule();
   // Why module i cannot be placed in the world built so far.

@@ -1,11 +1,12 @@
-// The JSON scene writer: a fixed key order and layout, a small readable header and then one
-// module per line, streamed to the file in chunks so that millions of modules never sit in memory
-// as one text.
+// The JSON scene writer: a fixed key order and layout, a small readable header, one module per
+// line, then the targets (a grid target's cells one per line), streamed to the file in chunks so
+// that millions of modules never sit in memory as one text.
 #include "io/json_scene.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -93,7 +94,58 @@ void appendModule(std::string& out, const world::Module& module) {
   out += "}";
 }
 
-// Fixed key order and layout: the header is small and readable, then one module per line.
+// "[r,g,b]"
+void appendColor(std::string& out, const Color& color) {
+  appendTriple(out, color.r, color.g, color.b);
+}
+
+// A grid target writes its cells one per line, and its colours, when any cell has one, one per
+// line in a parallel array; a CSG target fits on one line.
+void appendTarget(std::string& out, const target::Target& target) {
+  out += "    {\"format\":\"";
+  out += target::formatName(target.format());
+  out += '"';
+  if (target.color()) {
+    out += ",\"color\":";
+    appendColor(out, *target.color());
+  }
+  if (target.format() == target::Format::kCsg) {
+    const target::CsgPlacement& placement = target.csgPlacement();
+    out += ",\"content\":" + jsonString(target.csgContent());
+    if (placement.boundingBox)
+      out += *placement.boundingBox ? ",\"boundingBox\":true" : ",\"boundingBox\":false";
+    if (placement.offset) out += *placement.offset ? ",\"offset\":true" : ",\"offset\":false";
+    if (const auto& v = placement.translate) {
+      out += fmt::format(",\"translate\":[{},{},{}]", formatNumber(v->x), formatNumber(v->y),
+                         formatNumber(v->z));
+    }
+    out += "}";
+    return;
+  }
+  const auto& cells = target.gridCells();
+  out += ",\"cells\":[";
+  for (size_t i = 0; i < cells.size(); ++i) {
+    out += i == 0 ? "\n      " : ",\n      ";
+    appendTriple(out, cells[i].cell.x, cells[i].cell.y, cells[i].cell.z);
+  }
+  out += cells.empty() ? "]" : "\n    ]";
+  if (std::any_of(cells.begin(), cells.end(), [](const auto& cell) { return cell.color; })) {
+    out += ",\"colors\":[";
+    for (size_t i = 0; i < cells.size(); ++i) {
+      out += i == 0 ? "\n      " : ",\n      ";
+      if (cells[i].color) {
+        appendColor(out, *cells[i].color);
+      } else {
+        out += "null";
+      }
+    }
+    out += "\n    ]";
+  }
+  out += "}";
+}
+
+// Fixed key order and layout: the header is small and readable, then one module per line, then
+// the targets.
 void emitScene(const Scene& scene, Output& output) {
   std::string& out = output.text();
   out += fmt::format("{{\n  \"format\": \"{}\",\n  \"version\": {},\n", kJsonSceneFormat,
@@ -118,16 +170,26 @@ void emitScene(const Scene& scene, Output& output) {
 
   const auto modules = scene.world.modules();
   if (modules.empty()) {
-    out += "  \"modules\": []\n}\n";
-    return;
+    out += "  \"modules\": []";
+  } else {
+    out += "  \"modules\": [\n";
+    for (size_t i = 0; i < modules.size(); ++i) {
+      appendModule(out, modules[i]);
+      out += i + 1 < modules.size() ? ",\n" : "\n";
+      output.flushIfFull();
+    }
+    out += "  ]";
   }
-  out += "  \"modules\": [\n";
-  for (size_t i = 0; i < modules.size(); ++i) {
-    appendModule(out, modules[i]);
-    out += i + 1 < modules.size() ? ",\n" : "\n";
-    output.flushIfFull();
+  if (!scene.targets.empty()) {
+    out += ",\n  \"targets\": [\n";
+    for (size_t i = 0; i < scene.targets.size(); ++i) {
+      appendTarget(out, scene.targets[i]);
+      out += i + 1 < scene.targets.size() ? ",\n" : "\n";
+      output.flushIfFull();
+    }
+    out += "  ]";
   }
-  out += "  ]\n}\n";
+  out += "\n}\n";
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 // from this one type, so converting between them is a read and a write. The grid size lives in the
 // World's Bounds. What the files carry for VisibleSim's viewer (block size, camera, spotlight,
 // window size) is kept verbatim so that XML -> JSON -> XML gives the same file back; the simulator
-// itself never looks at it.
+// itself never looks at it. Target shapes (VisibleSim's <targetList>) ride along for the algorithms
+// that reconfigure the modules into them.
 #pragma once
 
 #include <array>
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "target/target.h"
 #include "world/world.h"
 
 namespace datomsim::io {
@@ -49,6 +51,8 @@ struct Scene {
   std::optional<std::string> name;
   std::optional<std::string> description;
   VisibleSimView visibleSim;
+  // Target shapes in file order, kept as the file gives them (target/target.h).
+  std::vector<target::Target> targets;
 };
 
 }  // namespace datomsim::io

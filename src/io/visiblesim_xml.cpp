@@ -6,15 +6,21 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
-#include <limits>
 #include <optional>
 #include <set>
 #include <vector>
 
 #include "io/number_text.h"
+#include "io/visiblesim_xml_detail.h"
 
 namespace datomsim::io {
 
+using detail::parseBlockSize;
+using detail::parseCell;
+using detail::parseColor;
+using detail::parseGridSize;
+using detail::parseId;
+using detail::parseOrientation;
 using geometry::Cell;
 using tinyxml2::XMLDocument;
 using tinyxml2::XMLElement;
@@ -23,59 +29,6 @@ using tinyxml2::XMLError;
 namespace {
 
 constexpr Color kDefaultColor{128, 128, 128};
-
-// Attribute texts -> values. Each returns nullopt when the text breaks the rule the caller names.
-
-std::optional<Cell> parseCell(const char* text) {
-  const auto values = parseIntegerList(text);
-  if (!values || values->size() != 3) return std::nullopt;
-  for (const int64_t v : *values) {
-    if (v < std::numeric_limits<int32_t>::min() || v > std::numeric_limits<int32_t>::max()) {
-      return std::nullopt;
-    }
-  }
-  return Cell{int32_t((*values)[0]), int32_t((*values)[1]), int32_t((*values)[2])};
-}
-
-std::optional<Cell> parseGridSize(const char* text) {
-  const auto cell = parseCell(text);
-  if (!cell || cell->x <= 0 || cell->y <= 0 || cell->z <= 0) return std::nullopt;
-  return cell;
-}
-
-std::optional<Color> parseColor(const char* text) {
-  const auto values = parseIntegerList(text);
-  if (!values || values->size() != 3) return std::nullopt;
-  for (const int64_t v : *values) {
-    if (v < 0 || v > 255) return std::nullopt;
-  }
-  return Color{uint8_t((*values)[0]), uint8_t((*values)[1]), uint8_t((*values)[2])};
-}
-
-std::optional<geometry::Orientation> parseOrientation(const char* text) {
-  const auto values = parseIntegerList(text);
-  if (!values || values->size() != 1) return std::nullopt;
-  const int64_t code = values->front();
-  if (code < 0 || code >= geometry::Orientation::kCount) return std::nullopt;
-  return geometry::Orientation::fromCode(int(code));
-}
-
-std::optional<uint32_t> parseId(const char* text) {
-  const auto values = parseIntegerList(text);
-  if (!values || values->size() != 1) return std::nullopt;
-  const int64_t id = values->front();
-  if (id < 1 || id > int64_t{std::numeric_limits<uint32_t>::max()}) return std::nullopt;
-  return uint32_t(id);
-}
-
-std::optional<std::array<double, 3>> parseBlockSize(const char* text) {
-  const auto values = parseNumberList(text);
-  if (!values || values->size() != 3) return std::nullopt;
-  for (const double v : *values) {
-    if (!(v > 0)) return std::nullopt;
-  }
-  return std::array<double, 3>{(*values)[0], (*values)[1], (*values)[2]};
-}
 
 // A readable phrase for tinyxml2's error codes; its own names are kept in parentheses.
 const char* describeXmlError(XMLError error) {
@@ -127,8 +80,10 @@ class XmlSceneReader {
       return Error{status.error()};
     }
 
-    // Viewer settings and the one blockList; anything else is VisibleSim's business.
+    // Viewer settings, the one blockList and the one targetList; anything else is VisibleSim's
+    // business.
     const XMLElement* blockList = nullptr;
+    const XMLElement* targetList = nullptr;
     for (const XMLElement* child = worldElement->FirstChildElement(); child;
          child = child->NextSiblingElement()) {
       const std::string_view name = child->Name();
@@ -143,11 +98,23 @@ class XmlSceneReader {
                                             blockList->GetLineNum()));
         }
         blockList = child;
+      } else if (name == "targetList") {
+        if (targetList) {
+          return errorAt(child, fmt::format("a second <targetList> (the first is on line {}); "
+                                            "only one is supported",
+                                            targetList->GetLineNum()));
+        }
+        targetList = child;
       }
     }
     if (!blockList) return errorAt(worldElement, "<world> has no <blockList>");
 
     if (Status status = readBlocks(*blockList, scene); !status) return Error{status.error()};
+    if (targetList) {
+      Result<std::vector<target::Target>> targets = detail::readTargetList(*targetList, source_);
+      if (!targets) return Error{targets.error()};
+      scene.targets = std::move(targets).value();
+    }
     scene.world.shrinkToFit();
     scene.world.latchAllNeighbours();
     return scene;
@@ -168,14 +135,12 @@ class XmlSceneReader {
   }
 
   Error errorAt(const XMLElement* element, std::string_view message) const {
-    return Error{fmt::format("{}:{}: {}", source_, element->GetLineNum(), message)};
+    return detail::errorAt(source_, element, message);
   }
 
-  // "block position "1,2" must be three integers x,y,z"
   Error attributeError(const XMLElement* element, const char* attribute, const char* value,
                        std::string_view rule) const {
-    return errorAt(element,
-                   fmt::format("{} {} \"{}\" {}", element->Name(), attribute, value, rule));
+    return detail::attributeError(source_, element, attribute, value, rule);
   }
 
   static AttributeList attributesOf(const XMLElement& element) {
@@ -354,7 +319,8 @@ void printElement(tinyxml2::XMLPrinter& printer, const char* name, const Attribu
   printer.CloseElement();
 }
 
-// The layout follows VisibleSim's own files: declaration, world, viewer settings, blockList.
+// The layout follows VisibleSim's own files: declaration, world, viewer settings, blockList,
+// targetList.
 void printScene(tinyxml2::XMLPrinter& printer, const Scene& scene) {
   printer.PushDeclaration("xml version=\"1.0\" standalone=\"no\" ");
   printer.OpenElement("world");
@@ -387,6 +353,7 @@ void printScene(tinyxml2::XMLPrinter& printer, const Scene& scene) {
     printer.CloseElement();
   }
   printer.CloseElement();
+  detail::printTargetList(printer, scene.targets);
   printer.CloseElement();
 }
 

@@ -4,6 +4,7 @@
 //   <world gridSize="X,Y,Z"> <camera .../> <spotlight .../>
 //     <blockList blockSize="10,10,10" color="r,g,b">
 //       <block position="x,y,z" color="r,g,b" orientation="o"/> ...
+//     <targetList> <target format="grid|csg"> ... (docs/file-formats.md, "Targets")
 //
 // Blocks carry no id: they get 1, 2, 3... in file order (the paper's mobile, listed first, is 1),
 // unless a block has an id attribute. Unknown elements and attributes are ignored. Every error

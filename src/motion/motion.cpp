@@ -170,13 +170,20 @@ std::optional<std::pair<int, int>> groupLetsGo(const World& world, const Deformi
   return std::nullopt;
 }
 
-// The fixed modules a motion would cut off from their piece: the latches it breaks are the
-// pivot's along U (but the one holding the mobile) and those each deforming module's pistons move.
-// The mobile takes no part: it is held by the pivot alone.
+// The modules a motion would cut off from their piece: the latches it breaks are the mobile's
+// (it is held by the pivot alone), the pivot's along U (but the one holding the mobile) and those
+// each deforming module's pistons move. An imagined mobile's module, if elsewhere, takes no part.
 std::vector<uint32_t> cutOffByMotion(const World& world, const Rule& rule, const Cell& pivotCell,
                                      const DeformingGroup& group, int size, const Mobile& mobile) {
   std::vector<world::BrokenLatch> broken;
   const Module& pivot = *world.moduleAt(pivotCell);
+  const Module* real = mobile.module ? world.find(*mobile.module) : nullptr;
+  if (real && real->cell == mobile.cell) {
+    const int hinge = geometry::oppositeDirection(rule.mobileDirection);
+    for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
+      if (direction != hinge) world::addBrokenLatch(world, *real, direction, broken);
+    }
+  }
   for (const int direction : geometry::directionsOfAxis(rule.up)) {
     if (direction != rule.mobileDirection) world::addBrokenLatch(world, pivot, direction, broken);
   }
@@ -188,7 +195,8 @@ std::vector<uint32_t> cutOffByMotion(const World& world, const Rule& rule, const
       }
     }
   }
-  return world::cutOffPiece(world, broken, mobile.module);
+  const bool imagined = mobile.module && !(real && real->cell == mobile.cell);
+  return world::cutOffPiece(world, broken, imagined ? mobile.module : std::nullopt);
 }
 
 // Checks one rule. Fills `refusal` when it fails and, if `deformations` is given, the list of

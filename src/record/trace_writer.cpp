@@ -64,7 +64,8 @@ bool movesWith(const datom::Part& part, int piston) {
 
 TraceWriter::TraceWriter(const datom::Dimensions& dimensions) : dimensions_(dimensions) {}
 
-void TraceWriter::header(const world::World& world, const std::string& description) {
+void TraceWriter::header(const world::World& world, const std::string& description,
+                         std::span<const std::vector<geometry::Cell>> targets) {
   auto out = std::back_inserter(text_);
   const datom::Dimensions& d = dimensions_;
   fmt::format_to(out,
@@ -134,7 +135,21 @@ void TraceWriter::header(const world::World& world, const std::string& descripti
                    m.color.g, m.color.b, m.latches);
     first = false;
   }
-  text_ += "]}\n";
+  text_ += "]";
+  // The target shapes, as cells; only when the scene has some.
+  if (!targets.empty()) {
+    text_ += ",\"targets\":[";
+    for (size_t t = 0; t < targets.size(); ++t) {
+      text_ += t ? ",[" : "[";
+      for (size_t i = 0; i < targets[t].size(); ++i) {
+        const geometry::Cell& cell = targets[t][i];
+        fmt::format_to(out, "{}[{},{},{}]", i ? "," : "", cell.x, cell.y, cell.z);
+      }
+      text_ += "]";
+    }
+    text_ += "]";
+  }
+  text_ += "}\n";
 }
 
 void TraceWriter::pistonMoving(program::Time, const sim::PistonMove& move) {
@@ -149,6 +164,19 @@ void TraceWriter::motionStarted(program::Time t, const sim::MotionStart& start) 
   note(t, fmt::format("module {} turns {} about pivot {} (piston {}) towards {}",
                       start.mobile.value, motion::toString(rule.turn), start.pivot.value, rule.up,
                       geometry::toString(start.plan->goal)));
+  // The motion as a whole, for timelines: who moves, about which pivot, which modules make way,
+  // and when it ends.
+  const geometry::Cell& goal = start.plan->goal;
+  std::string blockers;
+  for (const motion::Deformation& d : start.plan->deformations) {
+    blockers += fmt::format("{}{}", blockers.empty() ? "" : ",", d.module.value);
+  }
+  fmt::format_to(
+      std::back_inserter(text_),
+      "{{\"t\":{},\"motion\":{{\"m\":{},\"pivot\":{},\"goal\":[{},{},{}],\"blockers\":[{}],"
+      "\"end\":{}}}}}\n",
+      seconds(t), start.mobile.value, start.pivot.value, goal.x, goal.y, goal.z, blockers,
+      seconds(start.until));
 }
 
 void TraceWriter::motionRefused(program::Time t, ModuleId, const program::MoveRefusal& refusal) {

@@ -9,7 +9,9 @@
 // turned) are worked out here, from the module's model.
 #pragma once
 
+#include <span>
 #include <string>
+#include <vector>
 
 #include "common/result.h"
 #include "datom/dimensions.h"
@@ -26,8 +28,10 @@ class TraceWriter final : public sim::Observer {
  public:
   explicit TraceWriter(const datom::Dimensions& dimensions = {});
 
-  // The first line: call before the run, with the world as it starts.
-  void header(const world::World& world, const std::string& description);
+  // The first line: call before the run, with the world as it starts and the cells of the
+  // scene's target shapes, if any.
+  void header(const world::World& world, const std::string& description,
+              std::span<const std::vector<geometry::Cell>> targets = {});
   // A free-form marker the viewer shows on its timeline (e.g. "motion 3 starts").
   void note(program::Time t, const std::string& text);
   // The last line: totals of the run.

@@ -125,14 +125,16 @@ MoveResult MotionExecutor::request(uint32_t index, const motion::Motion& request
                                              geometry::toString(request.from),
                                              geometry::toString(mobile.cell))));
   }
-  if (const auto holder = reservations_.holderOf(index); holder && !inMotion(index)) {
-    MoveRefusal refused =
-        refusal(MoveRefusal::Reason::kModuleBusy,
-                fmt::format("it holds its piston for the motion of module {} ({})",
-                            holder->mobile.value, untilText(holder->until)));
-    refused.holder = holder->mobile;
-    refused.until = holder->until;
+  // A module that serves another motion (as its pivot or a blocking module) waits for it.
+  if (const auto hold = reservations_.holdOf(index); hold && hold->first.mobile != mobile.id) {
+    const auto& [holder, role] = *hold;
+    MoveRefusal refused = refusal(MoveRefusal::Reason::kModuleBusy,
+                                  fmt::format("it is the {} of the motion of module {} ({})", role,
+                                              holder.mobile.value, untilText(holder.until)));
+    refused.holder = holder.mobile;
+    refused.until = holder.until;
     refused.module = mobile.id;
+    refused.cell = mobile.cell;
     return refuse(index, std::move(refused));
   }
   if (mechanics_.pistons(index).piston >= 0 || inMotion(index) || isQueued(index)) {

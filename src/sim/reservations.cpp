@@ -41,6 +41,16 @@ std::optional<Reservations::Holder> Reservations::holderOf(uint32_t module) cons
   return found->second.holders.front();
 }
 
+std::optional<std::pair<Reservations::Holder, std::string_view>> Reservations::holdOf(
+    uint32_t module) const {
+  const auto found = modules_.find(module);
+  if (found == modules_.end()) return std::nullopt;
+  const Role role = found->second.role;
+  return std::pair{found->second.holders.front(), role == Role::kMobile  ? "mobile"
+                                                  : role == Role::kPivot ? "pivot"
+                                                                         : "blocking module"};
+}
+
 std::optional<Reservations::Holder> Reservations::blockerHolder(uint32_t module) const {
   const auto found = modules_.find(module);
   if (found == modules_.end() || found->second.role != Role::kBlocker) return std::nullopt;

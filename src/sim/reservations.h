@@ -15,7 +15,9 @@
 
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "motion/motion_values.h"
@@ -54,6 +56,8 @@ class Reservations {
   std::optional<program::MoveRefusal> conflict(const world::World& world, const Claim& claim) const;
   // What holds a module as the mobile or pivot of a motion, or as a blocking module.
   std::optional<Holder> holderOf(uint32_t module) const;
+  // The same with the role: "mobile", "pivot" or "blocking module".
+  std::optional<std::pair<Holder, std::string_view>> holdOf(uint32_t module) const;
   // What holds a module's piston compressed, if anything: its release must wait.
   std::optional<Holder> blockerHolder(uint32_t module) const;
   std::optional<Holder> cellHolder(const geometry::Cell& cell) const;

@@ -43,7 +43,7 @@ TEST(PaperExperiment, DistributedGradientEqualsReachOnBothArchScenes) {
       const auto run = experiment::runProgram(paperScene(hole), table(), request);
       ASSERT_TRUE(run.ok()) << run.error();
       EXPECT_EQ(run->distances,
-                reachDistances(paperScene(hole), request.goal, request.simulation.rules))
+                reachDistances(paperScene(hole), *request.goal, request.simulation.rules))
           << "hole " << hole;
       EXPECT_GT(run->statistics.messagesByType.at("DistanceMsg"), 0u);
     }

@@ -192,5 +192,83 @@ TEST_F(CommandLine, VerifyFindsNoCounterexampleOnThePapersScene) {
   EXPECT_NE(outcome.output.find("0 counterexamples"), std::string::npos) << outcome.output;
 }
 
+// A scene file holding `text`, for the target tests.
+std::string writeText(const std::string& path, const std::string& text) {
+  std::FILE* file = std::fopen(path.c_str(), "w");
+  std::fputs(text.c_str(), file);
+  std::fclose(file);
+  return path;
+}
+
+TEST_F(CommandLine, GenerateAttachesABoxTargetThatInfoReports) {
+  const std::string scene = path("box.json");
+  const Outcome generate = datomsim(
+      "generate box --size 3,3,1 --target-box 3,3,1 --target-origin "
+      "0,0,1 -o " +
+      scene);
+  ASSERT_EQ(generate.status, 0) << generate.output;
+  // The 9 target cells lie on the layer above the 9 modules: none filled, as many as modules.
+  const auto json = nlohmann::json::parse(datomsim("info --json " + scene).output);
+  ASSERT_EQ(json["targets"].size(), 1u);
+  EXPECT_EQ(json["targets"][0],
+            nlohmann::json(
+                {{"format", "grid"}, {"cells", 9}, {"filled", 0}, {"cells_equal_modules", true}}));
+  const Outcome text = datomsim("info " + scene);
+  EXPECT_NE(text.output.find("target 0    grid, 9 cells, 0 filled; as many cells as modules"),
+            std::string::npos)
+      << text.output;
+}
+
+TEST_F(CommandLine, GenerateTakesTheTargetsOfAnotherSceneAndConvertKeepsThem) {
+  // cube([2,2,2]) covers 17 cells (tests/unit/target), 4 of them on layer 0 under the box.
+  const std::string targets = writeText(
+      path("targets.xml"),
+      "<world><blockList/><targetList><target format=\"csg\"><csg content=\"cube([2,2,2]);\"/>"
+      "</target></targetList></world>\n");
+  const Outcome generate =
+      datomsim("generate box --size 2,2,1 --target " + targets + " -o " + path("box.json"));
+  ASSERT_EQ(generate.status, 0) << generate.output;
+  ASSERT_EQ(datomsim("convert " + path("box.json") + " -o " + path("box.xml")).status, 0);
+  for (const std::string& file : {path("box.json"), path("box.xml")}) {
+    const auto json = nlohmann::json::parse(datomsim("info --json " + file).output);
+    EXPECT_EQ(json["targets"],
+              nlohmann::json::parse(
+                  R"([{"format":"csg","cells":17,"filled":4,"cells_equal_modules":false}])"))
+        << file;
+  }
+  EXPECT_NE(readText(path("box.xml")).find("<csg content=\"cube([2,2,2]);\"/>"), std::string::npos);
+  const Outcome text = datomsim("info " + path("box.xml"));
+  EXPECT_NE(text.output.find("target 0    csg, 17 cells, 4 filled; 17 cells for 4 modules"),
+            std::string::npos)
+      << text.output;
+}
+
+TEST_F(CommandLine, RefusesBadTargetOptionsAndTargets) {
+  const Outcome origin =
+      datomsim("generate box --size 2,2,1 --target-origin 1,1,1 -o " + path("a.json"));
+  EXPECT_NE(origin.status, 0);
+  EXPECT_NE(origin.output.find("--target-box"), std::string::npos) << origin.output;
+  const Outcome size =
+      datomsim("generate box --size 2,2,1 --target-box 2,0,1 -o " + path("a.json"));
+  EXPECT_EQ(size.status, 1);
+  EXPECT_NE(size.output.find("--target-box \"2,0,1\" must be three positive integers"),
+            std::string::npos)
+      << size.output;
+  const Outcome none =
+      datomsim("generate box --size 2,2,1 --target " + arch(2) + " -o " + path("a.json"));
+  EXPECT_EQ(none.status, 1);
+  EXPECT_NE(none.output.find("has no targets"), std::string::npos) << none.output;
+  EXPECT_FALSE(std::filesystem::exists(path("a.json")));
+  // A target too large to list: info names it and fails rather than guess.
+  const std::string huge = writeText(
+      path("huge.json"), R"({"format":"datomsim-scene","version":1,"modules":[],"targets":[)"
+                         R"({"format":"csg","content":"cube([1000,1000,1000]);"}]})");
+  const Outcome info = datomsim("info " + huge);
+  EXPECT_EQ(info.status, 1);
+  EXPECT_NE(info.output.find("huge.json: targets[0]: the CSG shape's bounding box"),
+            std::string::npos)
+      << info.output;
+}
+
 }  // namespace
 }  // namespace datomsim

@@ -1,5 +1,6 @@
 // Test helpers comparing what the scene files carry: modules (id, cell, orientation, colour, in
-// order), bounds, block size and viewer settings. Latches and pistons are not in the files.
+// order), bounds, block size, viewer settings and targets. Latches and pistons are not in the
+// files.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -49,6 +50,13 @@ inline ::testing::AssertionResult sameScene(const Scene& a, const Scene& b) {
   if (a.description != b.description) return ::testing::AssertionFailure() << "descriptions differ";
   if (!(a.visibleSim == b.visibleSim)) {
     return ::testing::AssertionFailure() << "viewer settings differ";
+  }
+  if (a.targets.size() != b.targets.size()) {
+    return ::testing::AssertionFailure() << a.targets.size() << " targets vs " << b.targets.size();
+  }
+  for (size_t i = 0; i < a.targets.size(); ++i) {
+    if (!(a.targets[i] == b.targets[i]))
+      return ::testing::AssertionFailure() << "targets[" << i << "] differ";
   }
   return ::testing::AssertionSuccess();
 }

@@ -108,7 +108,7 @@ TEST(VisibleSimXml, UsesIdAttributesWhenPresent) {
 
 TEST(VisibleSimXml, IgnoresUnknownElementsAndAttributes) {
   const auto scene = parseVisibleSimXml(
-      "<world gridSize=\"5,5,5\"><targetList><target/></targetList>"
+      "<world gridSize=\"5,5,5\"><obstacleList><obstacle/></obstacleList>"
       "<blockList foo=\"bar\"><block position=\"1,1,0\" master=\"true\"/><note/></blockList>"
       "</world>",
       "scene.xml");

@@ -1,0 +1,101 @@
+#include "algorithms/walkers.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace datomsim::algorithms {
+
+namespace {
+
+constexpr int kRetry = 1;
+constexpr Color kWalking{255, 160, 32};
+constexpr Color kDone{64, 255, 64};
+constexpr Color kStuck{255, 48, 48};
+// After this many refusals in a row, a walker picks any of its motions, not the best one.
+constexpr int kStubborn = 3;
+
+// How far a motion takes the walker along world x, in half cells (the skew lattice moves x by
+// dx + dz/2).
+int progressX(const motion::Motion& motion) {
+  const geometry::Cell offset = motion.goal - motion.from;
+  return 2 * offset.x + offset.z;
+}
+
+}  // namespace
+
+void WalkerProgram::onStart(program::ModuleContext& context) {
+  walks_ = context.cell().z > 0;
+  if (!walks_) return;
+  heading_ = context.id().value % 2 == 1 ? 1 : -1;
+  context.setColor(kWalking);
+  step(context);
+}
+
+void WalkerProgram::step(program::ModuleContext& context) {
+  if (finished()) {
+    context.setColor(kDone);
+    return;
+  }
+  // The motions that need no helper and keep to the layer.
+  std::vector<motion::Motion> candidates;
+  for (motion::Evaluation& evaluation : context.motions()) {
+    auto* motion = std::get_if<motion::Motion>(&evaluation);
+    if (motion && motion->deformations.empty() && motion->goal.z == context.cell().z) {
+      candidates.push_back(std::move(*motion));
+    }
+  }
+  if (candidates.empty()) {
+    failure_ = "no motion on its layer from " + geometry::toString(context.cell());
+    context.setColor(kStuck);
+    return;
+  }
+  // The best way forward; at the edge, turn back. After repeated refusals, any motion will do.
+  auto forward = [&](const motion::Motion& m) { return heading_ * progressX(m); };
+  auto best =
+      std::max_element(candidates.begin(), candidates.end(),
+                       [&](const auto& a, const auto& b) { return forward(a) < forward(b); });
+  if (forward(*best) < 0) {
+    heading_ = -heading_;
+    best = std::max_element(candidates.begin(), candidates.end(),
+                            [&](const auto& a, const auto& b) { return forward(a) < forward(b); });
+  }
+  if (refusedInARow_ >= kStubborn) {
+    best = candidates.begin() + static_cast<long>(context.random().below(candidates.size()));
+  }
+  const program::MoveResult result = context.move(*best);
+  if (!result.ok()) {
+    ++refusals_;
+    ++refusedInARow_;
+    retryLater(context);
+  }
+}
+
+void WalkerProgram::retryLater(program::ModuleContext& context) {
+  if (refusedInARow_ >= kPatience) {
+    failure_ = "gave up after " + std::to_string(kPatience) + " refusals in a row at " +
+               geometry::toString(context.cell());
+    context.setColor(kStuck);
+    return;
+  }
+  // A random wait, so that two walkers that refused each other do not ask again together.
+  context.setTimer(context.random().between(50, 400) * program::kMillisecond, kRetry);
+}
+
+void WalkerProgram::onTimer(program::ModuleContext& context, int tag) {
+  if (walks_ && tag == kRetry) step(context);
+}
+
+void WalkerProgram::onMotionDone(program::ModuleContext& context) {
+  ++steps_;
+  refusedInARow_ = 0;
+  step(context);
+}
+
+void WalkerProgram::onMotionRefused(program::ModuleContext& context, const program::MoveRefusal&) {
+  ++refusals_;
+  ++refusedInARow_;
+  retryLater(context);
+}
+
+}  // namespace datomsim::algorithms

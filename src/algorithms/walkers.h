@@ -1,0 +1,53 @@
+// Walkers: modules that walk over a floor at the same time, meet, and get out of each other's way.
+//
+// A test of concurrent motions, not an algorithm of the paper. Every module above the ground layer
+// (z > 0) walks; the modules of the ground layer are the floor and only serve as pivots. A walker
+// with an odd id heads for +x, one with an even id for -x. At each step it lists its valid motions
+// that need no deformation and stay on its layer, and asks for the one that goes furthest its way
+// (sideways when nothing goes forward; it turns back at the edge). When the engine refuses (the
+// cell or the pivot is held by another walker's motion, or the world changed), it waits a random
+// while from its own random stream and tries again, choosing among the other motions after
+// repeated refusals. It stops after kSteps motions and turns green; a walker that cannot move at
+// all turns red and stops. No messages: the engine's reservations keep the walkers apart.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "program/module_program.h"
+
+namespace datomsim::algorithms {
+
+class WalkerProgram : public program::ModuleProgram {
+ public:
+  static constexpr int kSteps = 10;
+  // Refusals in a row after which a walker gives up (two walkers stuck face to face).
+  static constexpr int kPatience = 40;
+
+  void onStart(program::ModuleContext& context) override;
+  void onTimer(program::ModuleContext& context, int tag) override;
+  void onMotionDone(program::ModuleContext& context) override;
+  void onMotionRefused(program::ModuleContext& context,
+                       const program::MoveRefusal& refusal) override;
+
+  bool walks() const { return walks_; }
+  int steps() const { return steps_; }
+  int refusals() const { return refusals_; }
+  bool finished() const { return steps_ >= kSteps; }
+  // Why the walker stopped before its last step, if it did.
+  const std::optional<std::string>& failure() const { return failure_; }
+
+ private:
+  void step(program::ModuleContext& context);
+  void retryLater(program::ModuleContext& context);
+
+  bool walks_ = false;
+  int heading_ = 1;  // +1: towards +x, -1: towards -x
+  int steps_ = 0;
+  int refusals_ = 0;
+  int refusedInARow_ = 0;
+  std::optional<std::string> failure_;
+};
+
+}  // namespace datomsim::algorithms

@@ -1,0 +1,50 @@
+// Private to the VisibleSim XML reader and writer: the rules of the attribute texts, the errors
+// that name the source, line, attribute and value, and the <targetList> part of the format.
+#pragma once
+
+#include <tinyxml2.h>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "common/result.h"
+#include "geometry/cell.h"
+#include "geometry/orientation.h"
+#include "geometry/vec3.h"
+#include "target/target.h"
+
+namespace datomsim::io::detail {
+
+// Attribute texts -> values. Each returns nullopt when the text breaks the rule the caller names.
+
+std::optional<geometry::Cell> parseCell(const char* text);
+std::optional<geometry::Cell> parseGridSize(const char* text);
+std::optional<Color> parseColor(const char* text);
+std::optional<geometry::Orientation> parseOrientation(const char* text);
+std::optional<uint32_t> parseId(const char* text);
+std::optional<std::array<double, 3>> parseBlockSize(const char* text);
+// "true" or "false" in any case, or "1" or "0": what tinyxml2's QueryBoolAttribute, which
+// VisibleSim reads them with, accepts.
+std::optional<bool> parseBool(const char* text);
+// Three finite numbers "x,y,z".
+std::optional<geometry::Vec3> parseVector(const char* text);
+
+// "source:line: message", the line being the element's.
+Error errorAt(std::string_view source, const tinyxml2::XMLElement* element,
+              std::string_view message);
+
+// "source:line: block position "1,2" must be three integers x,y,z"
+Error attributeError(std::string_view source, const tinyxml2::XMLElement* element,
+                     const char* attribute, const char* value, std::string_view rule);
+
+// The targets of a <targetList>, in file order.
+Result<std::vector<target::Target>> readTargetList(const tinyxml2::XMLElement& targetList,
+                                                   std::string_view source);
+
+// Prints the <targetList> of the targets; nothing when there are none.
+void printTargetList(tinyxml2::XMLPrinter& printer, const std::vector<target::Target>& targets);
+
+}  // namespace datomsim::io::detail

@@ -9,6 +9,7 @@
 #include "experiment/run.h"
 #include "io/scene_file.h"
 #include "sim/statistics.h"
+#include "target/target.h"
 
 namespace datomsim::app {
 
@@ -154,6 +155,9 @@ void addRunCommand(CLI::App& app) {
     request.trace = !args->trace.empty();
     request.description = fmt::format("{} on {}", args->program, args->scene);
     io::Scene scene = unwrap(io::readScene(args->scene));
+    for (const target::Target& target : scene.targets) {
+      request.targets.push_back(unwrap(target.cells()));
+    }
     const motion::RuleTable table;
     const experiment::RunResult result =
         unwrap(experiment::runProgram(std::move(scene.world), table, request));

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "geometry/lattice.h"
+
 namespace datomsim::algorithms {
 
 namespace {
@@ -37,17 +39,26 @@ void WalkerProgram::step(program::ModuleContext& context) {
     context.setColor(kDone);
     return;
   }
-  // The motions that need no helper and keep to the layer.
+  // The motions that need no helper, keep to the layer and land on whole floor: the four cells
+  // under the goal hold modules (a walker senses cells two steps around it).
+  auto onFloor = [&](const geometry::Cell& goal) {
+    for (int below = 8; below < 12; ++below) {
+      if (!context.occupied(goal + geometry::neighbourOffset(below)).value_or(false)) return false;
+    }
+    return true;
+  };
   std::vector<motion::Motion> candidates;
   for (motion::Evaluation& evaluation : context.motions()) {
     auto* motion = std::get_if<motion::Motion>(&evaluation);
-    if (motion && motion->deformations.empty() && motion->goal.z == context.cell().z) {
+    if (motion && motion->deformations.empty() && motion->goal.z == context.cell().z &&
+        onFloor(motion->goal)) {
       candidates.push_back(std::move(*motion));
     }
   }
   if (candidates.empty()) {
-    failure_ = "no motion on its layer from " + geometry::toString(context.cell());
-    context.setColor(kStuck);
+    // Hemmed in for now: other walkers may move away.
+    ++refusedInARow_;
+    retryLater(context);
     return;
   }
   // The best way forward; at the edge, turn back. After repeated refusals, any motion will do.

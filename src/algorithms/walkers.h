@@ -3,12 +3,14 @@
 // A test of concurrent motions, not an algorithm of the paper. Every module above the ground layer
 // (z > 0) walks; the modules of the ground layer are the floor and only serve as pivots. A walker
 // with an odd id heads for +x, one with an even id for -x. At each step it lists its valid motions
-// that need no deformation and stay on its layer, and asks for the one that goes furthest its way
+// that need no deformation, stay on its layer and land where the floor is whole under the goal
+// (the four cells below it hold modules), and asks for the one that goes furthest its way
 // (sideways when nothing goes forward; it turns back at the edge). When the engine refuses (the
 // cell or the pivot is held by another walker's motion, or the world changed), it waits a random
 // while from its own random stream and tries again, choosing among the other motions after
-// repeated refusals. It stops after kSteps motions and turns green; a walker that cannot move at
-// all turns red and stops. No messages: the engine's reservations keep the walkers apart.
+// repeated refusals; hemmed in, it waits the same way. It stops after kSteps motions and turns
+// green; after kPatience refusals or waits in a row it gives up and turns red. No messages: the
+// engine's reservations keep the walkers apart.
 #pragma once
 
 #include <cstdint>
@@ -23,7 +25,7 @@ class WalkerProgram : public program::ModuleProgram {
  public:
   static constexpr int kSteps = 10;
   // Refusals in a row after which a walker gives up (two walkers stuck face to face).
-  static constexpr int kPatience = 40;
+  static constexpr int kPatience = 100;
 
   void onStart(program::ModuleContext& context) override;
   void onTimer(program::ModuleContext& context, int tag) override;

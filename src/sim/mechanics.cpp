@@ -69,8 +69,10 @@ Status Mechanics::release(uint32_t index) {
   if (state.phase != Phase::kCompressed) {
     return Error{fmt::format("module {}: no compressed piston to release", module.id.value)};
   }
-  // Releasing while a mobile passes is allowed here: the invariant check catches it.
+  // The simulator refuses to release a piston a motion needs (its reservations); the invariant
+  // checks catch any other way it could happen.
   state.phase = Phase::kReleasing;
+  touch(index);
   const program::Time now = agenda_.now();
   announce_(
       &Observer::pistonMoving, now,
@@ -85,11 +87,13 @@ bool Mechanics::finishDeformation(uint32_t index, std::span<const int16_t> motio
   const int piston = state.piston;
   if (state.phase == Phase::kCompressing) {
     state.phase = Phase::kCompressed;
+    touch(index);
     announce_(&Observer::pistonCompressed, agenda_.now(), id, piston);
     return true;
   }
   if (state.phase == Phase::kReleasing) {
     state.phase = Phase::kRest;
+    touch(index);
     state.compressedMask &= uint8_t(~pistonBit(piston));
     state.piston = -1;
     relatch(index, motionOf);

@@ -161,8 +161,20 @@ MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& reques
                                  fmt::format("no pivot at {}", geometry::toString(pivotCell))));
   }
   const uint32_t pivotIndex = *world_.indexOf(pivot->id);
-  if (!reservations_.holderOf(pivotIndex) &&
-      (mechanics_.pistons(pivotIndex).piston >= 0 || inMotion(pivotIndex))) {
+  // A pivot turns one mobile at a time, and a module that moves or makes way is no pivot.
+  if (const auto hold = reservations_.holdOf(pivotIndex)) {
+    const auto& [holder, role] = *hold;
+    MoveRefusal refused =
+        refusal(MoveRefusal::Reason::kModuleBusy,
+                fmt::format("pivot {} is the {} of the motion of module {} ({})", pivot->id.value,
+                            role, holder.mobile.value, untilText(holder.until)));
+    refused.holder = holder.mobile;
+    refused.until = holder.until;
+    refused.module = pivot->id;
+    refused.cell = pivot->cell;
+    return refuse(index, std::move(refused));
+  }
+  if (mechanics_.pistons(pivotIndex).piston >= 0) {
     MoveRefusal refused = refusal(MoveRefusal::Reason::kNotAtRest,
                                   fmt::format("pivot {} is not at rest", pivot->id.value));
     refused.module = pivot->id;

@@ -17,6 +17,8 @@ struct Script {
   std::function<void(program::ModuleContext&, int)> timer = [](program::ModuleContext&, int) {};
   std::function<void(program::ModuleContext&)> deformed = [](program::ModuleContext&) {};
   std::function<void(program::ModuleContext&)> moved = [](program::ModuleContext&) {};
+  std::function<void(program::ModuleContext&, const program::MoveRefusal&)> refused =
+      [](program::ModuleContext&, const program::MoveRefusal&) {};
 };
 
 class ScriptedProgram : public program::ModuleProgram {
@@ -29,6 +31,9 @@ class ScriptedProgram : public program::ModuleProgram {
   void onTimer(program::ModuleContext& c, int tag) override { script_->timer(c, tag); }
   void onDeformationDone(program::ModuleContext& c) override { script_->deformed(c); }
   void onMotionDone(program::ModuleContext& c) override { script_->moved(c); }
+  void onMotionRefused(program::ModuleContext& c, const program::MoveRefusal& r) override {
+    script_->refused(c, r);
+  }
 
  private:
   const Script* script_;

@@ -63,8 +63,14 @@ class StatisticsRecorder final : public Observer {
   StatisticsRecorder(const StatisticsRecorder&) = delete;
   StatisticsRecorder& operator=(const StatisticsRecorder&) = delete;
 
-  void eventStarted(program::Time, EventKind kind, ModuleId) override {
+  void eventStarted(program::Time t, EventKind kind, ModuleId) override {
     ++statistics_.eventsByKind[static_cast<size_t>(kind)];
+    // The motions in flight at a time are counted once all its events are done: a motion that
+    // ends at T and one that starts at T are never in flight together.
+    if (t > countedAt_) {
+      settleConcurrency();
+      countedAt_ = t;
+    }
   }
   void messageReceived(program::Time, ModuleId, int, const program::Message& message) override {
     ++counterOf(message.typeName());
@@ -87,7 +93,7 @@ class StatisticsRecorder final : public Observer {
   void motionStarted(program::Time t, const MotionStart& start) override {
     if (statistics_.firstMotionStart < 0) statistics_.firstMotionStart = t;
     statistics_.motionTime += start.until - t;
-    statistics_.maxConcurrentMotions = std::max(statistics_.maxConcurrentMotions, ++inFlight_);
+    ++inFlight_;
     if (const auto waiting = waitingSince_.find(start.mobile.value);
         waiting != waitingSince_.end()) {
       statistics_.reservationWait += t - waiting->second;
@@ -102,6 +108,7 @@ class StatisticsRecorder final : public Observer {
 
   // A run of the event loop is over at simulated time `now`, after `wallSeconds`.
   void runEnded(program::Time now, double wallSeconds) {
+    settleConcurrency();
     statistics_.simulatedTime = now;
     statistics_.wallSeconds += wallSeconds;
   }
@@ -123,10 +130,14 @@ class StatisticsRecorder final : public Observer {
   void startWaiting(program::Time t, ModuleId mobile) {
     waitingSince_.try_emplace(mobile.value, t);
   }
+  void settleConcurrency() {
+    statistics_.maxConcurrentMotions = std::max(statistics_.maxConcurrentMotions, inFlight_);
+  }
 
   Statistics statistics_;
   std::vector<std::pair<const char*, uint64_t*>> counters_;
   int inFlight_ = 0;
+  program::Time countedAt_ = 0;
   std::unordered_map<uint32_t, program::Time> waitingSince_;  // by module id
 };
 

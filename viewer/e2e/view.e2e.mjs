@@ -1,14 +1,22 @@
 // End-to-end test of the viewer: the datomsim binary writes the pages of the paper's runs, and
 // headless Chromium opens them from disk (file://, no server, no network).
 //
-//   node e2e/view.e2e.mjs --datomsim PATH [--shots DIR]     (or DATOMSIM=PATH, DATOMSIM_SHOTS=DIR)
+//   node e2e/view.e2e.mjs --datomsim PATH [--shots DIR] [--viewer-js FILE]
+//                                        (or DATOMSIM=PATH, DATOMSIM_SHOTS=DIR, DATOMSIM_VIEWER_JS=FILE)
+//
+// The pages carry the viewer built from viewer/src (build.mjs, into the scratch folder), or FILE,
+// so that the test checks these sources whatever bundle lies next to the binary.
 //
 // For each page: no console error, no request leaves the file, the canvas is drawn (the
-// screenshot is not blank), stepping changes the picture, seeking is deterministic, a click on a
-// module shows its panel, and playing at speed reaches the end of the run with the mobile at the
-// goal. Screenshots go to DIR (default /tmp/viewer-shots). Ends with "N passed, M failed".
+// screenshot is not blank). On the paper's runs: stepping changes the picture, seeking is
+// deterministic, a click on a module shows its panel, and playing at speed reaches the end of the
+// run with the mobile at the goal. On a run of 10 walkers moving at once: the concurrency strip's
+// maximum is the run's max_concurrent_motions, at a time of many motions in flight as many module
+// bodies are away from their cells, playing to a time and seeking to it give the same picture.
+// On the same run with target shapes added to its header: the target cells are drawn and counted.
+// Screenshots go to DIR (default /tmp/viewer-shots). Ends with "N passed, M failed".
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -25,6 +33,12 @@ function option(name, fallback) {
 
 const datomsim = option('--datomsim', process.env.DATOMSIM);
 const shots = resolve(option('--shots', process.env.DATOMSIM_SHOTS || '/tmp/viewer-shots'));
+const givenBundle = option('--viewer-js', process.env.DATOMSIM_VIEWER_JS);
+// Rows of a screenshot left out of its statistics: the control bar (92 px with the strip).
+const BAR = 100;
+// The walkers' scene: a 12x6x1 floor (ids 1..72) and 10 walkers on top, ids 73..82.
+const WALKER_CELLS = [[1, 1, 1], [1, 3, 1], [3, 2, 1], [2, 4, 1], [9, 1, 1], [10, 3, 1], [8, 2, 1], [9, 4, 1], [5, 1, 1], [6, 4, 1]];
+const TARGET = [[4, 2, 1], [5, 2, 1], [6, 2, 1], [4, 3, 1], [5, 3, 1], [6, 3, 1]];
 if (!datomsim || !existsSync(datomsim)) {
   console.error('view.e2e: give the datomsim binary: --datomsim PATH or DATOMSIM=PATH');
   process.exit(2);
@@ -51,36 +65,71 @@ function run(...args) {
   return execFileSync(datomsim, args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
 }
 
-// The pages: the demo's, when it writes viewers; else written with `datomsim view` from the
-// demo's traces and `datomsim reach` maps. Plus a scene shown at rest.
+// The viewer script of the pages: FILE of --viewer-js, else viewer/src bundled now.
+function viewerBundle(scratch) {
+  if (givenBundle) return resolve(givenBundle);
+  const file = join(scratch, 'viewer.bundle.js');
+  execFileSync(process.execPath, [join(repository, 'viewer', 'build.mjs'), '--outfile', file], { stdio: 'ignore' });
+  return file;
+}
+
+// The pages, written with `datomsim view` and the bundle: the demo's traces with their
+// `datomsim reach` maps, a scene shown at rest, the walkers' run, and the walkers' run with
+// targets added to its header.
 function makePages(scratch) {
+  const bundle = viewerBundle(scratch);
+  const view = (...args) => run('view', ...args, '--viewer-js', bundle);
   const demo = join(scratch, 'demo');
   run('demo', '-o', demo);
   const pages = [];
   for (const hole of [2, 1]) {
     const name = `arch-hole${hole}`;
-    const demoPage = readdirSync(demo).find((f) => f.startsWith(name) && f.endsWith('.html'));
-    if (demoPage) {
-      pages.push({ name, file: join(demo, demoPage), run: true, overlay: true });
-      continue;
-    }
     const scene = join(repository, 'scenes', `paper-${name}.json`);
     const reach = join(scratch, `${name}-reach.json`);
     run('reach', scene, '--goal', GOAL.join(','), '--start', START.join(','), '--out', reach);
     const file = join(scratch, `${name}.html`);
-    run('view', join(demo, `${name}-trace.jsonl`), '--reach', reach, '-o', file);
+    view(join(demo, `${name}-trace.jsonl`), '--reach', reach, '-o', file);
     pages.push({ name, file, run: true, overlay: true });
   }
   const sceneFile = join(scratch, 'scene-hole1.html');
-  run('view', join(repository, 'scenes', 'paper-arch-hole1.json'), '-o', sceneFile);
+  view(join(repository, 'scenes', 'paper-arch-hole1.json'), '-o', sceneFile);
   pages.push({ name: 'scene-hole1', file: sceneFile, run: false, overlay: false });
+
+  // Walkers: the floor, 10 modules on top, all walking at once.
+  const floor = join(scratch, 'floor.json');
+  run('generate', 'box', '--size', '12,6,1', '-o', floor);
+  const scene = JSON.parse(readFileSync(floor, 'utf8'));
+  WALKER_CELLS.forEach((cell, k) => scene.modules.push({ id: 73 + k, cell, orientation: 0, color: [200, 100, 0] }));
+  const walk = join(scratch, 'walk.json');
+  writeFileSync(walk, JSON.stringify(scene));
+  const trace = join(scratch, 'walk.jsonl');
+  const out = join(scratch, 'run.json');
+  run('run', walk, '--program', 'walkers', '--trace', trace, '--out', out);
+  const summary = JSON.parse(readFileSync(out, 'utf8'));
+  const text = readFileSync(trace, 'utf8');
+  const walkFile = join(scratch, 'walk.html');
+  view(trace, '-o', walkFile);
+  const refusals = text.split('\n').filter((line) => /"note":"motion refused/.test(line)).length;
+  pages.push({ name: 'walkers', file: walkFile, walkers: { summary, refusals } });
+
+  // The same run with two target shapes in its header: 6 cells of the floor's top, and the
+  // walkers' start cells.
+  const lines = text.split('\n');
+  const header = JSON.parse(lines[0]);
+  header.targets = [TARGET, WALKER_CELLS];
+  lines[0] = JSON.stringify(header);
+  const targetTrace = join(scratch, 'walk-target.jsonl');
+  writeFileSync(targetTrace, lines.join('\n'));
+  const targetFile = join(scratch, 'walk-target.html');
+  view(targetTrace, '-o', targetFile);
+  pages.push({ name: 'walkers-target', file: targetFile, targets: true });
   return pages;
 }
 
 // Statistics of a PNG screenshot, decoded by the browser: luminance variance and distinct colours
 // of the 3D view (the control bar left out).
 async function pictureStats(page, png) {
-  return page.evaluate(async (b64) => {
+  return page.evaluate(async ([b64, bar]) => {
     const image = new Image();
     image.src = `data:image/png;base64,${b64}`;
     await image.decode();
@@ -89,7 +138,7 @@ async function pictureStats(page, png) {
     canvas.height = image.height;
     const context = canvas.getContext('2d');
     context.drawImage(image, 0, 0);
-    const height = image.height - 60;
+    const height = image.height - bar;
     const { data } = context.getImageData(0, 0, image.width, height);
     let sum = 0;
     let sum2 = 0;
@@ -103,13 +152,13 @@ async function pictureStats(page, png) {
     }
     const mean = sum / n;
     return { variance: sum2 / n - mean * mean, colours: colours.size, width: image.width, height };
-  }, png.toString('base64'));
+  }, [png.toString('base64'), BAR]);
 }
 
 // Fraction of pixels that differ between two PNG screenshots of the same size.
 async function difference(page, a, b) {
   return page.evaluate(
-    async ([pa, pb]) => {
+    async ([pa, pb, bar]) => {
       const load = async (b64) => {
         const image = new Image();
         image.src = `data:image/png;base64,${b64}`;
@@ -119,7 +168,7 @@ async function difference(page, a, b) {
         canvas.height = image.height;
         const context = canvas.getContext('2d');
         context.drawImage(image, 0, 0);
-        return context.getImageData(0, 0, image.width, image.height - 60).data;
+        return context.getImageData(0, 0, image.width, image.height - bar).data;
       };
       const [x, y] = [await load(pa), await load(pb)];
       let differ = 0;
@@ -128,7 +177,7 @@ async function difference(page, a, b) {
       }
       return differ / (x.length / 4);
     },
-    [a.toString('base64'), b.toString('base64')],
+    [a.toString('base64'), b.toString('base64'), BAR],
   );
 }
 
@@ -269,11 +318,158 @@ async function testPage(context, spec) {
     });
   }
 
+  if (spec.walkers) await testWalkers(page, spec);
+  if (spec.targets) await testTargets(page, spec);
+
   await check(`${name}: no console error and no request leaves the file`, async () => {
     assert(errors.length === 0, `console errors: ${errors.join(' | ')}`);
     assert(requests.length === 0, `requests: ${requests.join(' ')}`);
   });
   await page.close();
+}
+
+// The ids of the module bodies away from their cells' centres (by more than 0.05 spacing): those
+// mid-motion.
+async function awayFromCells(page) {
+  const modules = await page.evaluate(() => window.datomsimViewer.modules());
+  return modules
+    .filter((m) => Math.hypot(...m.position.map((p, k) => p - cellToWorld(m.cell, 2)[k])) > 0.1)
+    .map((m) => m.id);
+}
+
+// The walkers' run: 10 motions at once at most.
+async function testWalkers(page, spec) {
+  const name = spec.name;
+  const api = 'window.datomsimViewer';
+  const { summary, refusals } = spec.walkers;
+  const concurrency = await page.evaluate(`${api}.concurrency()`);
+  const duration = await page.evaluate(`${api}.duration`);
+
+  await check(`${name}: the strip's maximum is the run's max_concurrent_motions (${summary.max_concurrent_motions})`, async () => {
+    assert(summary.max_concurrent_motions >= 5, `the run has only ${summary.max_concurrent_motions} motions at once`);
+    assert(concurrency.max === summary.max_concurrent_motions, `strip max ${concurrency.max}`);
+    const label = await page.evaluate(() => document.querySelector('.dv-strip-label')?.textContent);
+    assert(label === `max ${summary.max_concurrent_motions}`, `the strip's label is ${label}`);
+    assert(concurrency.refusals === refusals, `${concurrency.refusals} refusal ticks, the trace has ${refusals}`);
+    // The strip is drawn: wide, and its plot colour fills a good part of it.
+    const drawn = await page.evaluate(() => {
+      const canvas = document.querySelector('.dv-strip-canvas');
+      const { data } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
+      let plot = 0;
+      for (let k = 0; k < data.length; k += 4) if (data[k] === 0x4f && data[k + 1] === 0x79 && data[k + 2] === 0xb5) ++plot;
+      return { width: canvas.clientWidth, plot: plot / (data.length / 4) };
+    });
+    assert(drawn.width > 600, `the strip is only ${drawn.width} px wide`);
+    assert(drawn.plot > 0.2, `the plot fills ${(100 * drawn.plot).toFixed(1)} % of the strip`);
+  });
+
+  // A time in the middle of the first stretch with the most motions in flight.
+  const { from, to } = concurrency.maxAt[0];
+  const busy = (from + to) / 2;
+  await check(`${name}: at ${busy.toFixed(3)} s, ${concurrency.max} motions in flight and as many modules mid-motion`, async () => {
+    await page.evaluate(`${api}.seek(${busy})`);
+    const inFlight = await page.evaluate(`${api}.motionsInFlight()`);
+    assert(inFlight.length === concurrency.max && inFlight.length >= 5, `${inFlight.length} motions in flight`);
+    const away = await awayFromCells(page);
+    const mobiles = inFlight.map((m) => m.m).sort((a, b) => a - b);
+    assert(away.length >= 5, `only ${away.length} module bodies away from their cells`);
+    assert(JSON.stringify(away.sort((a, b) => a - b)) === JSON.stringify(mobiles), `away ${away}, mobiles ${mobiles}`);
+    const line = await page.evaluate(() => document.querySelector('.dv-motions').textContent);
+    assert(line.startsWith(`${concurrency.max} motions in flight (max ${concurrency.max})`), line);
+    // The marker of the current time is over the strip, where the time is.
+    const marker = await page.evaluate(() => {
+      const inner = document.querySelector('.dv-strip-inner').getBoundingClientRect();
+      const cursor = document.querySelector('.dv-strip-cursor').getBoundingClientRect();
+      return { x: (cursor.left + cursor.right) / 2 - inner.left, width: inner.width };
+    });
+    const expected = (busy / duration) * marker.width;
+    assert(Math.abs(marker.x - expected) < 2, `the time marker is at ${marker.x} px, expected ${expected}`);
+    await shoot(page, `${name}-concurrent`);
+    // Closer, from the front, on the walkers.
+    await page.evaluate(`${api}.camera([12, -8, 17], [12, 6.5, 1.5])`);
+    await shoot(page, `${name}-concurrent-close`);
+    await page.evaluate(`${api}.fit()`);
+    // The panel of a mobile says what it does.
+    await page.evaluate(`${api}.selectId(${mobiles[0]})`);
+    const info = await page.evaluate(`${api}.selectedInfo()`);
+    assert(/motion\s+mobile, about pivot \d+ to/.test(info), `the panel of mobile ${mobiles[0]}: ${info}`);
+    await page.evaluate(`${api}.selectId(-1)`);
+  });
+
+  await check(`${name}: playing to a time shows what seeking to it shows`, async () => {
+    await page.evaluate(`${api}.seek(${Math.max(0, from - 1.5)}); ${api}.setSpeed(2); ${api}.play()`);
+    await page.waitForFunction((t) => window.datomsimViewer.time() >= t, from, { timeout: 60000, polling: 50 });
+    await page.evaluate(`${api}.pause()`);
+    const t = await page.evaluate(`${api}.time()`);
+    const played = await shoot(page, `${name}-played`);
+    const awayPlayed = await awayFromCells(page);
+    await page.evaluate(`${api}.seek(${duration}); ${api}.seek(0); ${api}.seek(${t})`);
+    const sought = await shoot(page, `${name}-sought`);
+    assert(JSON.stringify(await awayFromCells(page)) === JSON.stringify(awayPlayed), 'other modules away from their cells');
+    const changed = await difference(page, played, sought);
+    assert(changed === 0, `${(100 * changed).toFixed(3)} % of the pixels differ at ${t} s`);
+    rmSync(join(shots, `${name}-played.png`));
+    rmSync(join(shots, `${name}-sought.png`));
+  });
+
+  await check(`${name}: a click on the strip seeks there`, async () => {
+    const box = await page.evaluate(() => {
+      const r = document.querySelector('.dv-strip-inner').getBoundingClientRect();
+      return { x: r.left, y: r.top, width: r.width, height: r.height };
+    });
+    await page.mouse.click(box.x + box.width * 0.25, box.y + box.height / 2);
+    const t = await page.evaluate(`${api}.time()`);
+    assert(Math.abs(t - duration * 0.25) < duration / box.width + 1e-6, `seeked to ${t}, expected ${duration * 0.25}`);
+    await page.evaluate(`${api}.seek(${busy})`);
+    await settle(page);
+    await page.screenshot({ path: join(shots, `${name}-strip.png`), clip: { x: 0, y: 800 - BAR - 40, width: 1280, height: BAR + 40 } });
+  });
+}
+
+// The walkers' run with two target shapes in its header.
+async function testTargets(page, spec) {
+  const name = spec.name;
+  const api = 'window.datomsimViewer';
+  const filledNow = async (shape) => {
+    const modules = await page.evaluate(`${api}.modules()`);
+    const held = new Set(modules.map((m) => m.cell.join(',')));
+    return shape.filter((c) => held.has(c.join(','))).length;
+  };
+  const duration = await page.evaluate(`${api}.duration`);
+
+  await check(`${name}: the target's cells are counted, filled ones at the current time`, async () => {
+    for (const t of [0, duration * 0.3, duration * 0.6, duration]) {
+      await page.evaluate(`${api}.seek(${t})`);
+      const targets = await page.evaluate(`${api}.targets()`);
+      const filled = await filledNow(TARGET);
+      assert(targets.shapes === 2 && targets.cells === TARGET.length, JSON.stringify(targets));
+      assert(targets.filled === filled, `${targets.filled} filled, the modules hold ${filled} at ${t}`);
+      assert(targets.legend === `target 1 of 2: ${TARGET.length} cells, ${filled} filled`, `legend ${targets.legend}`);
+    }
+    await page.evaluate(`${api}.seek(0); ${api}.setTargetShape(1)`);
+    const second = await page.evaluate(`${api}.targets()`);
+    assert(second.cells === 10 && second.filled === 10, `the walkers' start cells at 0: ${JSON.stringify(second)}`);
+    await page.evaluate(`${api}.setTargetShape(0)`);
+  });
+
+  await check(`${name}: the target cells are drawn, translucent, and hide with G`, async () => {
+    // Seen from the top at a time some target cells are empty.
+    await page.evaluate(`${api}.seek(${duration * 0.3}); ${api}.fit('top')`);
+    const shown = await shoot(page, `${name}-top`);
+    await page.keyboard.press('g');
+    assert((await page.evaluate(`${api}.targets().visible`)) === false, 'G did not hide the target');
+    const hidden = await shoot(page, `${name}-top-hidden`);
+    const changed = await difference(page, shown, hidden);
+    assert(changed > 0.003, `showing the target changes only ${(100 * changed).toFixed(3)} % of the pixels`);
+    rmSync(join(shots, `${name}-top-hidden.png`));
+    await page.keyboard.press('g');
+    assert((await page.evaluate(`${api}.targets().visible`)) === true, 'G did not show the target');
+    await page.evaluate(`${api}.fit()`);
+    await shoot(page, `${name}`);
+    await page.evaluate(`${api}.camera([10, -4, 10], [10, 5.5, 1.5])`);
+    await shoot(page, `${name}-close`);
+    await page.evaluate(`${api}.fit()`);
+  });
 }
 
 const scratch = mkdtempSync(join(tmpdir(), 'datomsim-e2e-'));

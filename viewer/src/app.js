@@ -2,8 +2,10 @@
 //
 // Playback only maps wall-clock time to trace time (times the speed); each picture is
 // timeline.frameAt(t), so the speed, pauses and seeks never change what is shown at a given t.
-import { PART_SCHEMES, rgbToCss } from './colors.js';
+import { PART_SCHEMES, TARGET_EMPTY, TARGET_FILLED, rgbToCss } from './colors.js';
+import { formatSeconds } from './format.js';
 import { Kinematics } from './kinematics.js';
+import { ConcurrencyStrip } from './strip.js';
 import { Timeline } from './timeline.js';
 import { nextChangeTime, previousChangeTime } from './trace.js';
 import { View3D } from './view3d.js';
@@ -47,8 +49,25 @@ function checkbox(label, checked, onChange) {
   return { wrapper, input };
 }
 
-export function formatTime(t) {
-  return `${t.toFixed(2)} s`;
+export const formatTime = formatSeconds;
+
+// The mobiles of the motions in flight, as "73, 74, 75", at most `limit` of them.
+function mobileList(motions, limit = 12) {
+  const ids = motions.slice(0, limit).map((m) => String(m.m));
+  if (motions.length > limit) ids.push('\u2026');
+  return ids.join(', ');
+}
+
+// What a module does in the motions in flight: mobile, pivot, or a blocking module making way.
+export function motionRoles(motions, id) {
+  const roles = [];
+  for (const m of motions) {
+    const to = `(${m.goal.join(', ')}), ${formatTime(m.t)} \u2013 ${formatTime(m.end)}`;
+    if (m.m === id) roles.push(`mobile, about pivot ${m.pivot} to ${to}`);
+    if (m.pivot === id) roles.push(`pivot of ${m.m} (to ${to})`);
+    if (m.blockers.includes(id)) roles.push(`makes way for ${m.m} (to ${to})`);
+  }
+  return roles;
 }
 
 function formatVector(v) {
@@ -71,6 +90,7 @@ export class App {
     this.view = new View3D(this.canvasHolder, this.timeline, this.kinematics, overlay);
     this.view.setOverlayVisible(true);
     this.overlayToggle.wrapper.hidden = !overlay;
+    if (this.strip) this.strip.draw();
     this.installInput();
     this.seek(0);
     this.tick = this.tick.bind(this);
@@ -82,6 +102,20 @@ export class App {
     this.canvasHolder = element('div', { className: 'dv-canvas' });
     const title = header.description || 'datomsim trace';
     this.noteLine = element('div', { className: 'dv-note' });
+    this.noteLine.hidden = this.duration <= 0;
+    // Motions in flight (when the trace has "motion" lines) and the target legend.
+    this.motionLine = element('div', { className: 'dv-motions' });
+    this.targets = this.trace.targets;
+    this.targetShape = 0;
+    // "[empty] target: N cells, [filled] M filled": each count after the colour of its balls.
+    this.targetText = element('span');
+    this.filledText = element('span');
+    const empty = element('span', { className: 'dv-swatch dv-target-swatch', title: 'a target cell no module holds' });
+    empty.style.background = rgbToCss(TARGET_EMPTY);
+    const filled = element('span', { className: 'dv-swatch dv-target-swatch', title: 'a target cell a module holds' });
+    filled.style.background = rgbToCss(TARGET_FILLED);
+    this.targetLine = element('div', { className: 'dv-target' }, [empty, this.targetText, filled, this.filledText]);
+    this.targetLine.hidden = this.targets.length === 0;
     this.top = element('div', { className: 'dv-top' }, [
       element('div', { className: 'dv-title', text: title }),
       element('div', {
@@ -89,6 +123,8 @@ export class App {
         text: `${header.modules.length} modules, r = ${header.dimensions.r}, t = ${header.dimensions.t ?? 0}` +
           (this.duration > 0 ? `, ${formatTime(this.duration)}` : ', scene (no changes)'),
       }),
+      this.targetLine,
+      this.motionLine,
       this.noteLine,
     ]);
 
@@ -108,7 +144,7 @@ export class App {
       this.seek(Number(this.slider.value));
     });
     this.timeLabel = element('span', { className: 'dv-time' });
-    this.speedSelect = element('select', { title: 'Playing speed (trace seconds per second)' });
+    this.speedSelect = element('select', { title: 'Playing speed (trace seconds per second)', className: 'dv-speed' });
     for (const s of SPEEDS) {
       const option = element('option', { value: String(s), text: `${s}\u00D7` });
       if (s === 1) option.selected = true;
@@ -126,7 +162,17 @@ export class App {
         markers.appendChild(tick);
       }
     }
-    const sliderBox = element('div', { className: 'dv-slider-box' }, [this.slider, markers]);
+    const sliderCell = element('div', { className: 'dv-slider-cell' }, [this.slider, markers]);
+    const sliderBox = element('div', { className: 'dv-slider-box' }, [sliderCell, element('span')]);
+    // The concurrency strip, when the trace has motion lines.
+    if (this.trace.motions.length > 0 && this.duration > 0) {
+      this.strip = new ConcurrencyStrip(this.timeline.motionIndex, this.trace.refusals, this.duration, (t) =>
+        this.pauseAndSeek(t),
+      );
+      sliderBox.append(this.strip.element, this.strip.label);
+      this.root.classList.add('dv-has-strip');
+    }
+    this.motionLine.hidden = !this.strip;
 
     this.labelsToggle = checkbox('labels', false, (on) => {
       this.view.setLabelsVisible(on);
@@ -145,6 +191,15 @@ export class App {
       this.view.showLatches = on;
       this.redraw();
     });
+    this.targetsToggle = checkbox('target', true, (on) => this.setTargetsVisible(on));
+    this.targetsToggle.wrapper.title = 'Show the target cells (G)';
+    this.targetsToggle.wrapper.hidden = this.targets.length === 0;
+    this.targetSelect = element('select', { title: 'Which target shape to show and count' });
+    this.targets.forEach((shape, k) => {
+      this.targetSelect.appendChild(element('option', { value: String(k), text: `target ${k + 1} of ${this.targets.length}` }));
+    });
+    this.targetSelect.hidden = this.targets.length < 2;
+    this.targetSelect.addEventListener('change', () => this.setTargetShape(Number(this.targetSelect.value)));
     this.schemeSelect = element('select', { title: 'Connector colour: red as in the paper, or a dark tint of the module' });
     for (const scheme of PART_SCHEMES) {
       this.schemeSelect.appendChild(element('option', { value: scheme, text: `connectors: ${scheme === 'paper' ? 'red' : 'tint'}` }));
@@ -174,6 +229,8 @@ export class App {
       element('div', { className: 'dv-toggles' }, [
         this.labelsToggle.wrapper,
         this.overlayToggle.wrapper,
+        this.targetsToggle.wrapper,
+        this.targetSelect,
         this.latchesToggle.wrapper,
         this.focusToggle.wrapper,
         this.schemeSelect,
@@ -186,7 +243,8 @@ export class App {
     this.panel.hidden = true;
     this.help = element('div', {
       className: 'dv-help',
-      text: 'drag: orbit \u00B7 right-drag: pan \u00B7 wheel: zoom \u00B7 click: module \u00B7 space: play \u00B7 \u2190 \u2192: step \u00B7 F: fit \u00B7 T: top \u00B7 L: labels \u00B7 X: focus',
+      text: 'drag: orbit \u00B7 right-drag: pan \u00B7 wheel: zoom \u00B7 click: module \u00B7 space: play \u00B7 \u2190 \u2192: step \u00B7 F: fit \u00B7 T: top \u00B7 L: labels \u00B7 X: focus' +
+        (this.trace.targets.length ? ' \u00B7 G: target' : ''),
     });
     this.root.append(this.canvasHolder, this.top, this.panel, this.help, this.bar);
   }
@@ -204,7 +262,10 @@ export class App {
       if (moved > 4) return; // a drag of the camera, not a click
       this.select(this.view.pick(event.clientX, event.clientY));
     });
-    window.addEventListener('resize', () => this.view.resize());
+    window.addEventListener('resize', () => {
+      this.view.resize();
+      if (this.strip) this.strip.draw();
+    });
     window.addEventListener('keydown', (event) => {
       if (event.target instanceof HTMLInputElement && event.target.type !== 'range' && event.target.type !== 'checkbox') return;
       if (event.target instanceof HTMLSelectElement) return;
@@ -242,6 +303,10 @@ export class App {
         case 'X':
           this.setFocus(!this.view.focus);
           return;
+        case 'g':
+        case 'G':
+          if (this.targets.length) this.setTargetsVisible(!this.targetsToggle.input.checked);
+          return;
         case 'Escape':
           this.select(-1);
           return;
@@ -266,7 +331,38 @@ export class App {
     this.slider.value = String(this.time);
     this.timeLabel.textContent = `${formatTime(this.time)} / ${formatTime(this.duration)}`;
     this.noteLine.textContent = frame.note ? `${formatTime(frame.note.t)}: ${frame.note.text}` : '';
+    if (this.strip) {
+      this.strip.setTime(this.time);
+      const n = frame.motions.length;
+      this.motionLine.textContent =
+        `${n} motion${n === 1 ? '' : 's'} in flight (max ${this.timeline.motionIndex.max})` +
+        (n ? `: ${mobileList(frame.motions)}` : '');
+    }
+    this.updateTargetLegend();
     this.updatePanel();
+  }
+
+  // "target: N cells, M filled" at the current time, for the shape shown.
+  updateTargetLegend() {
+    const fill = this.view.targetFill;
+    if (!fill) return;
+    const which = this.targets.length > 1 ? ` ${this.targetShape + 1} of ${this.targets.length}` : '';
+    this.targetText.textContent = `target${which}: ${fill.cells} cells,`;
+    this.filledText.textContent = `${fill.filled} filled`;
+  }
+
+  setTargetsVisible(on) {
+    this.targetsToggle.input.checked = on;
+    this.view.setTargetsVisible(on);
+    this.view.render();
+  }
+
+  setTargetShape(k) {
+    if (!(k >= 0 && k < this.targets.length)) return;
+    this.targetShape = k;
+    this.targetSelect.value = String(k);
+    this.view.setTargetShape(k);
+    this.redraw();
   }
 
   setFocus(on) {
@@ -346,6 +442,10 @@ export class App {
       ['position', formatVector(m.position.toArray())],
       ['piston', m.piston < 0 ? 'all at rest' : `${m.piston} at ${(100 * m.fraction).toFixed(0)} %`],
     ];
+    for (const other of m.otherPistons) {
+      rows.push(['also', `piston ${other.p} at ${(100 * other.fraction).toFixed(0)} %`]);
+    }
+    for (const role of motionRoles(this.frame.motions, m.id)) rows.push(['motion', role]);
     const latched = [];
     for (let c = 0; c < 12; ++c) {
       if (!(m.latches & (1 << c))) continue;
@@ -415,8 +515,37 @@ export class App {
       },
       modulePose: (id) => {
         const m = this.frame.modules[this.timeline.indexOfId.get(id)];
-        return { position: m.position.toArray(), piston: m.piston, fraction: m.fraction };
+        return { position: m.position.toArray(), piston: m.piston, fraction: m.fraction, cell: m.cell.slice() };
       },
+      // Every module at the current time: id, cell (the one it holds), position, piston.
+      modules: () =>
+        this.frame.modules.map((m) => ({
+          id: m.id,
+          cell: m.cell.slice(),
+          position: m.position.toArray(),
+          piston: m.piston,
+          fraction: m.fraction,
+          moving: m.moving,
+        })),
+      // The motions in flight now, and the strip's counts.
+      motionsInFlight: () => this.frame.motions.map((m) => ({ ...m })),
+      concurrency: () => ({
+        max: this.timeline.motionIndex.max,
+        maxAt: this.timeline.motionIndex.maxAt.map((a) => ({ from: a.from, to: Number.isFinite(a.to) ? a.to : this.duration })),
+        steps: this.timeline.motionIndex.steps,
+        strip: this.strip ? { label: this.strip.label.textContent, width: this.strip.inner.clientWidth } : null,
+        refusals: this.trace.refusals.length,
+      }),
+      targets: () => ({
+        shapes: this.targets.length,
+        shown: this.targetShape,
+        visible: this.targetsToggle.input.checked,
+        cells: this.view.targetFill ? this.view.targetFill.cells : 0,
+        filled: this.view.targetFill ? this.view.targetFill.filled : 0,
+        legend: this.targetLine.hidden ? null : `${this.targetText.textContent} ${this.filledText.textContent}`,
+      }),
+      setTargets: (on) => this.setTargetsVisible(on),
+      setTargetShape: (k) => this.setTargetShape(k),
     };
   }
 }

@@ -23,6 +23,10 @@ const RAMP_END = [15, 15, 50];
 // Colour of the path line (render::kPathColor).
 export const PATH_COLOR = [220, 0, 0];
 
+// Target cells (translucent balls): a cell no module holds yet, and a cell a module holds.
+export const TARGET_EMPTY = [40, 170, 235];
+export const TARGET_FILLED = [150, 90, 225];
+
 function mixChannel(from, to, t) {
   return Math.round(from + (to - from) * t);
 }

@@ -2,21 +2,27 @@
 export const STYLE = `
 html, body { margin: 0; height: 100%; overflow: hidden; background: #e9edf2;
   font: 13px/1.35 system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans", sans-serif; color: #1d2430; }
-#datomsim-viewer { position: fixed; inset: 0; }
+#datomsim-viewer { position: fixed; inset: 0; --dv-bar: 52px; }
+#datomsim-viewer.dv-has-strip { --dv-bar: 96px; }
 #datomsim-viewer [hidden] { display: none !important; }
-.dv-canvas { position: absolute; inset: 0 0 52px 0; }
+.dv-canvas { position: absolute; inset: 0 0 var(--dv-bar) 0; }
 .dv-canvas canvas { display: block; }
 .dv-labels { position: absolute; top: 0; left: 0; pointer-events: none; }
 .dv-label { font-size: 11px; font-weight: 600; color: #fff; background: rgba(20, 28, 40, 0.72);
   padding: 0 4px; border-radius: 3px; }
-.dv-top { position: absolute; top: 8px; left: 10px; right: 300px; pointer-events: none;
-  text-shadow: 0 0 3px #fff, 0 0 3px #fff; }
+.dv-top { position: absolute; top: 6px; left: 8px; max-width: calc(100% - 310px); pointer-events: none;
+  text-shadow: 0 0 3px #fff, 0 0 3px #fff; background: rgba(251, 252, 253, 0.72); border-radius: 5px;
+  padding: 3px 7px; }
 .dv-title { font-weight: 600; font-size: 14px; white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
 .dv-subtitle { color: #4a5566; }
 .dv-note { margin-top: 2px; color: #8a1c1c; min-height: 1.35em; }
-.dv-help { position: absolute; right: 10px; bottom: 58px; color: #5a6474; font-size: 11px;
+.dv-motions { margin-top: 2px; color: #2c4a7a; }
+.dv-target { margin-top: 2px; display: flex; align-items: center; gap: 4px; }
+.dv-target-swatch { opacity: 0.8; border-radius: 50%; border-color: #667; width: 11px; height: 11px; }
+.dv-target-swatch + span { margin-right: 4px; }
+.dv-help { position: absolute; right: 10px; bottom: calc(var(--dv-bar) + 6px); color: #5a6474; font-size: 11px;
   pointer-events: none; text-shadow: 0 0 3px #fff; }
-.dv-bar { position: absolute; left: 0; right: 0; bottom: 0; height: 52px; display: flex;
+.dv-bar { position: absolute; left: 0; right: 0; bottom: 0; height: var(--dv-bar); display: flex;
   align-items: center; gap: 10px; padding: 0 10px; box-sizing: border-box;
   background: #fbfcfd; border-top: 1px solid #c9d0da; }
 .dv-bar button, .dv-bar select { font: inherit; height: 28px; border: 1px solid #b9c1cc;
@@ -25,7 +31,24 @@ html, body { margin: 0; height: 100%; overflow: hidden; background: #e9edf2;
 .dv-transport { display: flex; gap: 3px; }
 .dv-transport button { width: 34px; padding: 0; display: flex; align-items: center; justify-content: center; }
 .dv-transport svg { width: 14px; height: 14px; fill: #2a3340; }
-.dv-slider-box { position: relative; flex: 1; min-width: 120px; }
+.dv-slider-box { flex: 1; min-width: 120px; display: grid; grid-template-columns: 1fr auto;
+  column-gap: 6px; row-gap: 3px; align-items: center; }
+.dv-slider-cell { position: relative; }
+.dv-has-strip .dv-bar { display: grid; grid-template-columns: auto auto auto 1fr auto;
+  grid-template-rows: 30px auto; grid-template-areas: "transport time speed . toggles" "slider slider slider slider slider";
+  align-content: center; align-items: center; row-gap: 10px; column-gap: 10px; padding: 0 10px 4px; }
+.dv-has-strip .dv-transport { grid-area: transport; }
+.dv-has-strip .dv-time { grid-area: time; min-width: 0; }
+.dv-has-strip .dv-speed { grid-area: speed; }
+.dv-has-strip .dv-toggles { grid-area: toggles; }
+.dv-has-strip .dv-slider-box { grid-area: slider; }
+.dv-strip { padding: 0 7px; cursor: pointer; }
+.dv-strip-inner { position: relative; height: 22px; }
+.dv-strip-canvas { display: block; position: absolute; left: 0; top: 0; border-radius: 2px; }
+.dv-strip-cursor { position: absolute; top: -2px; bottom: -2px; width: 2px; margin-left: -1px;
+  background: #1d2430; pointer-events: none; }
+.dv-strip-label { font-size: 11px; color: #2c4a7a; font-weight: 600; white-space: nowrap;
+  font-variant-numeric: tabular-nums; }
 .dv-slider { width: 100%; margin: 0; }
 .dv-markers { position: absolute; left: 7px; right: 7px; top: -7px; height: 6px; pointer-events: none; }
 .dv-marker { position: absolute; width: 2px; height: 6px; background: #b33; margin-left: -1px; }

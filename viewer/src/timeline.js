@@ -6,7 +6,9 @@
 // how the viewer got there, nor on the playing speed. For speed the timeline keeps a copy of the
 // state every `checkpointEvery` changes and replays from the nearest one.
 import { Matrix4, Quaternion, Vector3 } from 'three';
+import { MotionIndex } from './concurrency.js';
 import { NEIGHBOUR_OFFSETS, addCells, cellKey, directionVector, nearestDirection } from './lattice.js';
+import { REFUSAL_NOTE } from './trace.js';
 
 // The unit quaternion of an orientation matrix given by rows (module frame -> world).
 export function quaternionOfRows(rows) {
@@ -42,7 +44,8 @@ function cloneModule(m) {
     rgb: m.rgb.slice(),
     latches: m.latches,
     partners: new Map(m.partners),
-    piston: m.piston && { ...m.piston },
+    // One stroke per own piston (null: never moved): strokes are never changed once made.
+    pistons: m.pistons.slice(),
     turn: m.turn && { ...m.turn },
     moved: m.moved,
   };
@@ -66,6 +69,8 @@ export class Timeline {
     this.checkpointEvery = checkpointEvery;
     this.orientationQuats = this.header.orientations.map(quaternionOfRows);
     this.indexOfId = new Map(this.header.modules.map((m, index) => [m.id, index]));
+    // The motions in flight at any time, from the "motion" lines (none in older traces).
+    this.motionIndex = new MotionIndex(trace.motions ?? []);
 
     const initial = {
       applied: 0,
@@ -79,7 +84,7 @@ export class Timeline {
         rgb: m.rgb.slice(),
         latches: m.latches ?? 0,
         partners: new Map(),
-        piston: null,
+        pistons: [null, null, null, null, null, null],
         turn: null,
         moved: false,
       })),
@@ -132,7 +137,7 @@ export class Timeline {
     switch (event.kind) {
       case 'piston': {
         const m = moduleOf(body.m);
-        m.piston = { p: body.p, from: body.from, to: body.to, t0: event.t, d: body.d };
+        m.pistons[body.p] = { p: body.p, from: body.from, to: body.to, t0: event.t, d: body.d, seq: event.seq };
         break;
       }
       case 'turn': {
@@ -179,7 +184,8 @@ export class Timeline {
         moduleOf(body.m).rgb = body.rgb.slice();
         break;
       case 'note':
-        state.note = { t: event.t, text: String(body) };
+        // Refusals are ticks of the concurrency strip; the note line keeps the motions' notes.
+        if (!REFUSAL_NOTE.test(String(body))) state.note = { t: event.t, text: String(body) };
         break;
       case 'end':
         state.end = { t: event.t, summary: body };
@@ -214,21 +220,34 @@ export class Timeline {
     return { position, quaternion };
   }
 
-  // Piston of a module at t: {piston, fraction}, piston -1 at rest.
+  // Piston of a module at t: {piston, fraction, others}, piston -1 at rest. Each own piston
+  // follows its own last stroke. A Datom compresses one piston at a time; should a trace leave
+  // several compressed, the picture shows the one whose stroke started last, and `others` lists
+  // the rest.
   pistonAt(m, t) {
-    const s = m.piston;
-    if (!s) return { piston: -1, fraction: 0 };
-    const fraction = s.from + (s.to - s.from) * ramp(t, s.t0, s.d);
-    return { piston: fraction > 0 ? s.p : -1, fraction: Math.max(0, Math.min(1, fraction)) };
+    let shown = null;
+    const compressed = [];
+    for (const s of m.pistons) {
+      if (!s) continue;
+      const f = Math.max(0, Math.min(1, s.from + (s.to - s.from) * ramp(t, s.t0, s.d)));
+      if (f <= 0) continue;
+      const entry = { p: s.p, fraction: f, t0: s.t0, seq: s.seq };
+      compressed.push(entry);
+      if (!shown || entry.t0 > shown.t0 || (entry.t0 === shown.t0 && entry.seq > shown.seq)) shown = entry;
+    }
+    if (!shown) return { piston: -1, fraction: 0, others: [] };
+    const others = compressed.filter((c) => c !== shown).map((c) => ({ p: c.p, fraction: c.fraction }));
+    return { piston: shown.p, fraction: shown.fraction, others };
   }
 
   // Everything the picture needs at time t: for each module (header order) its position,
-  // rotation, piston and fraction, colour and latches; plus the current note.
+  // rotation, piston and fraction, colour and latches; the current note; the motions in flight.
   frameAt(t) {
     const state = this.stateAt(t);
+    const motions = this.motionIndex.inFlightAt(t);
     const modules = state.modules.map((m) => {
       const { position, quaternion } = this.turnedPose(m, t);
-      const { piston, fraction } = this.pistonAt(m, t);
+      const { piston, fraction, others } = this.pistonAt(m, t);
       return {
         id: m.id,
         index: m.index,
@@ -238,6 +257,7 @@ export class Timeline {
         quaternion,
         piston,
         fraction,
+        otherPistons: others,
         rgb: m.rgb,
         latches: m.latches,
         partners: m.partners,
@@ -245,7 +265,7 @@ export class Timeline {
         inTransit: m.moved,
       };
     });
-    return { t, modules, note: state.note, end: state.end };
+    return { t, modules, motions, note: state.note, end: state.end };
   }
 
   // The module a latched own connector holds, {m: id, c: its connector}, or null when unknown:

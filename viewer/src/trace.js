@@ -7,7 +7,11 @@
 
 export const TRACE_FORMAT = 'datomsim-trace';
 export const TRACE_VERSION = 1;
-export const EVENT_KINDS = ['piston', 'turn', 'place', 'latch', 'color', 'note', 'end'];
+export const EVENT_KINDS = ['piston', 'turn', 'place', 'latch', 'color', 'motion', 'note', 'end'];
+
+// Notes that say a request was refused (src/record/trace_writer.cpp): drawn as ticks on the
+// concurrency strip rather than as markers of the timeline.
+export const REFUSAL_NOTE = /^(motion|deformation) refused\b/;
 
 export class TraceError extends Error {
   constructor(message, line) {
@@ -180,7 +184,22 @@ export function checkHeader(header, line = 1) {
       line,
     );
   });
+  checkTargets(header.targets, line);
   return header;
+}
+
+// Checks the header's optional "targets": a list of target shapes, each a list of cells
+// [x, y, z] (integers). Returns the list (empty when the header has none).
+export function checkTargets(targets, line) {
+  if (targets === undefined) return [];
+  ensure(Array.isArray(targets), '"targets" must be a list of target shapes', line);
+  targets.forEach((shape, s) => {
+    ensure(Array.isArray(shape), `targets[${s}] must be a list of cells`, line);
+    shape.forEach((cell, k) => {
+      ensure(isCell(cell), `targets[${s}][${k}] is not a cell [x,y,z] of integers: ${JSON.stringify(cell)}`, line);
+    });
+  });
+  return targets;
 }
 
 // Checks an overlay: {"distances": [[x,y,z,d], ...], "path": [[x,y,z], ...], "goal": [x,y,z]},
@@ -209,7 +228,7 @@ export function checkOverlay(overlay, where = 'overlay') {
   return { distances, path, goal };
 }
 
-function checkEvent(kind, body, ids, line) {
+function checkEvent(kind, body, ids, line, t) {
   const known = (id, field) => ensure(ids.has(id), `"${kind}" names unknown module ${JSON.stringify(id)} in "${field}"`, line);
   const duration = () =>
     ensure(isFiniteNumber(body.d) && body.d >= 0, `"${kind}" needs a duration "d" >= 0`, line);
@@ -247,14 +266,24 @@ function checkEvent(kind, body, ids, line) {
       known(body.m, 'm');
       ensure(Array.isArray(body.rgb) && body.rgb.length === 3, '"color" needs "rgb"', line);
       break;
+    case 'motion':
+      known(body.m, 'm');
+      known(body.pivot, 'pivot');
+      ensure(isCell(body.goal), '"motion" needs "goal" [x,y,z] of integers', line);
+      ensure(Array.isArray(body.blockers), '"motion" needs a list "blockers"', line);
+      body.blockers.forEach((id) => known(id, 'blockers'));
+      ensure(isFiniteNumber(body.end) && body.end >= t, '"motion" needs an "end" time >= its "t"', line);
+      break;
     default:
       break;
   }
 }
 
-// Parses a whole trace. Returns {header, events, duration, changeTimes, notes, overlay, end}:
-// events sorted by time, then by their order in the file (the simulator may write an event that
-// starts later before one that starts now), each {t, kind, body, line, seq}.
+// Parses a whole trace. Returns {header, events, duration, changeTimes, notes, refusals, motions,
+// targets, overlay, end}: events sorted by time, then by their order in the file (the simulator
+// may write an event that starts later before one that starts now), each {t, kind, body, line,
+// seq}; motions {t, end, m, pivot, goal, blockers} from the "motion" lines, sorted by start;
+// notes split into refusals ("motion refused: ...") and the others.
 export function parseTrace(text) {
   const values = splitJsonValues(text);
   if (values.length === 0) throw new TraceError('the trace is empty');
@@ -271,7 +300,7 @@ export function parseTrace(text) {
     const body = value[kind];
     if (kind !== 'note' && kind !== 'end') {
       ensure(body && typeof body === 'object', `"${kind}" must be an object`, line);
-      checkEvent(kind, body, ids, line);
+      checkEvent(kind, body, ids, line, value.t);
     }
     if (kind === 'end') end = { t: value.t, summary: body };
     events.push({ t: value.t, kind, body, line, seq: events.length });
@@ -283,18 +312,32 @@ export function parseTrace(text) {
   let duration = 0;
   for (const e of events) {
     times.add(e.t);
-    const d = e.kind === 'piston' || e.kind === 'turn' ? e.body.d : 0;
-    times.add(e.t + d);
-    duration = Math.max(duration, e.t + d);
+    const until = e.kind === 'piston' || e.kind === 'turn' ? e.t + e.body.d : e.kind === 'motion' ? e.body.end : e.t;
+    times.add(until);
+    duration = Math.max(duration, until);
   }
   const changeTimes = [...times].sort((a, b) => a - b);
-  const notes = events.filter((e) => e.kind === 'note').map((e) => ({ t: e.t, text: String(e.body) }));
+  const allNotes = events.filter((e) => e.kind === 'note').map((e) => ({ t: e.t, text: String(e.body) }));
+  const notes = allNotes.filter((n) => !REFUSAL_NOTE.test(n.text));
+  const refusals = allNotes.filter((n) => REFUSAL_NOTE.test(n.text));
+  const motions = events
+    .filter((e) => e.kind === 'motion')
+    .map((e) => ({
+      t: e.t,
+      end: e.body.end,
+      m: e.body.m,
+      pivot: e.body.pivot,
+      goal: e.body.goal.slice(),
+      blockers: e.body.blockers.slice(),
+      line: e.line,
+    }));
+  const targets = header.targets ?? [];
 
   const overlay = checkOverlay(
     header.overlay ?? (header.distances || header.path ? { distances: header.distances, path: header.path } : null),
     'header.overlay',
   );
-  return { header, events, duration, changeTimes, notes, overlay, end };
+  return { header, events, duration, changeTimes, notes, refusals, motions, targets, overlay, end };
 }
 
 // The first change time strictly after t, or null.

@@ -4,7 +4,8 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
-import { LATCHED_CONNECTOR, PATH_COLOR, distanceColor, mixRgb, partColor } from './colors.js';
+import { LATCHED_CONNECTOR, PATH_COLOR, TARGET_EMPTY, TARGET_FILLED, distanceColor, mixRgb, partColor } from './colors.js';
+import { targetFill } from './concurrency.js';
 import { thickened } from './kinematics.js';
 import { cellToWorld } from './lattice.js';
 
@@ -14,6 +15,10 @@ export const MIN_THICKNESS = 0.06;
 // Side of a distance square, and radius of the path line, in lattice spacings.
 export const DISTANCE_CUBE_SIDE = 0.24;
 export const PATH_RADIUS = 0.035;
+// Radius of a target cell's ball, in lattice spacings (neighbour cells are 1 apart: balls never
+// meet), and its opacity.
+export const TARGET_RADIUS = 0.4;
+export const TARGET_OPACITY = 0.38;
 
 const BACKGROUND = 0xe9edf2;
 
@@ -56,6 +61,7 @@ export class View3D {
     this.buildModules();
     this.buildGround();
     this.buildOverlay(overlay);
+    this.buildTargets(timeline.trace.targets ?? []);
     this.buildLabels();
     this.resize();
     this.fit();
@@ -111,6 +117,7 @@ export class View3D {
     const box = new THREE.Box3();
     for (const m of this.header.modules) box.expandByPoint(new THREE.Vector3(...m.pos));
     if (this.overlayCells) for (const p of this.overlayCells) box.expandByPoint(p);
+    if (this.targetCells) for (const p of this.targetCells) box.expandByPoint(p);
     if (box.isEmpty()) box.expandByPoint(new THREE.Vector3());
     box.expandByScalar(this.radius);
     return box;
@@ -222,6 +229,70 @@ export class View3D {
     }
   }
 
+  // Target shapes: a translucent ball at the centre of every cell of each shape, one instanced mesh
+  // per shape, only the chosen shape shown. The balls do not write depth, so a module in or behind
+  // a target cell stays visible through it; empty cells and filled cells have their own colours.
+  buildTargets(targets) {
+    this.targets = targets;
+    this.targetGroup = new THREE.Group();
+    this.targetGroup.visible = true;
+    this.scene.add(this.targetGroup);
+    this.targetMeshes = [];
+    this.targetCells = [];
+    this.targetShape = 0;
+    const s = this.spacing;
+    const geometry = new THREE.SphereGeometry(TARGET_RADIUS * s, 24, 16);
+    const material = new THREE.MeshLambertMaterial({
+      transparent: true,
+      opacity: TARGET_OPACITY,
+      depthWrite: false,
+    });
+    const matrix = new THREE.Matrix4();
+    targets.forEach((shape, k) => {
+      const mesh = new THREE.InstancedMesh(geometry, material, Math.max(1, shape.length));
+      mesh.count = shape.length;
+      mesh.renderOrder = 2;
+      mesh.frustumCulled = false;
+      shape.forEach((cell, i) => {
+        const p = cellToWorld(cell, s);
+        this.targetCells.push(new THREE.Vector3(...p));
+        mesh.setMatrixAt(i, matrix.makeTranslation(p[0], p[1], p[2]));
+        mesh.setColorAt(i, colorOf(TARGET_EMPTY));
+      });
+      mesh.visible = k === this.targetShape;
+      this.targetGroup.add(mesh);
+      this.targetMeshes.push(mesh);
+    });
+    this.targetFill = null;
+  }
+
+  setTargetsVisible(visible) {
+    this.targetGroup.visible = visible;
+  }
+
+  setTargetShape(k) {
+    this.targetShape = k;
+    this.targetMeshes.forEach((mesh, j) => {
+      mesh.visible = j === k;
+    });
+    if (this.frame) this.updateTargets(this.frame);
+  }
+
+  // Colours the chosen shape's cells by whether a module holds them in the frame; returns
+  // {cells, filled, isFilled} (null without targets).
+  updateTargets(frame) {
+    const shape = this.targets[this.targetShape];
+    if (!shape) return null;
+    const fill = targetFill(shape, frame.modules);
+    const mesh = this.targetMeshes[this.targetShape];
+    const empty = colorOf(TARGET_EMPTY);
+    const filled = colorOf(TARGET_FILLED);
+    fill.isFilled.forEach((full, i) => mesh.setColorAt(i, full ? filled : empty));
+    if (mesh.instanceColor) mesh.instanceColor.needsUpdate = true;
+    this.targetFill = fill;
+    return fill;
+  }
+
   buildLabels() {
     this.labels = this.header.modules.map((m) => {
       const div = document.createElement('div');
@@ -287,6 +358,7 @@ export class View3D {
       mesh.computeBoundingSphere();
     }
     this.frame = frame;
+    this.updateTargets(frame);
   }
 
   render() {
@@ -322,7 +394,9 @@ export class View3D {
     // For the eye at target - D forward with target = centre + a right + b up, a point at
     // (x, y, z) in the camera frame is in view when |x - a| + r <= (z + D) tanH (and likewise for
     // y): the smallest D and its a, b are closed forms of the extreme points.
-    const points = this.header.modules.map((m) => new THREE.Vector3(...m.pos)).concat(this.overlayCells);
+    const points = this.header.modules
+      .map((m) => new THREE.Vector3(...m.pos))
+      .concat(this.overlayCells, this.targetCells ?? []);
     if (points.length === 0) points.push(centre.clone());
     let [plusX, minusX, plusY, minusY] = [-Infinity, -Infinity, -Infinity, -Infinity];
     for (const point of points) {

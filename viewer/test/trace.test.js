@@ -8,7 +8,7 @@ import {
   previousChangeTime,
   splitJsonValues,
 } from '../src/trace.js';
-import { fixtureText, module, syntheticTrace } from './fixtures/synthetic.js';
+import { WALKERS, fixtureText, module, syntheticTrace, walkersText } from './fixtures/synthetic.js';
 
 describe('splitJsonValues', () => {
   it('reads one value per line and values spread over several lines', () => {
@@ -131,5 +131,96 @@ describe('overlays', () => {
     assert.throws(() => checkOverlay([1]), /not an object/);
     assert.equal(checkOverlay({ distances: [] }), null);
     assert.equal(checkOverlay(null), null);
+  });
+});
+
+describe('motion lines', () => {
+  const modules = [module(1, [0, 0, 1]), module(2, [0, 0, 0]), module(3, [1, 0, 0]), module(4, [2, 0, 0])];
+  const motion = (over = {}) => ({ m: 1, pivot: 2, goal: [1, 0, 1], blockers: [3], end: 2, ...over });
+
+  it('reads a motion line: who moves, about which pivot, to where, until when, who makes way', () => {
+    const trace = parseTrace(
+      syntheticTrace({
+        modules,
+        events: [
+          { t: 0, note: 'module 1 turns left about pivot 2 (piston 4) towards 1,0,1' },
+          { t: 0, motion: motion() },
+          { t: 0.5, note: 'motion refused: module 4: cell 1,0,1 is reserved by the motion of module 1 (until 2 s)' },
+          { t: 0.5, note: 'deformation refused: module 3 cannot compress piston 2' },
+        ],
+      }),
+    );
+    assert.deepEqual(trace.motions, [{ t: 0, end: 2, m: 1, pivot: 2, goal: [1, 0, 1], blockers: [3], line: 3 }]);
+    assert.equal(trace.duration, 2, 'a motion lasts until its end');
+    assert.ok(trace.changeTimes.includes(2));
+    assert.deepEqual(trace.notes.map((n) => n.t), [0], 'the motion notes mark the timeline');
+    assert.deepEqual(trace.refusals.map((n) => n.t), [0.5, 0.5], 'refusals are kept apart');
+    assert.match(trace.refusals[0].text, /^motion refused: module 4/);
+  });
+
+  it('refuses bad motion lines, naming the line', () => {
+    const bad = [
+      [motion({ m: 9 }), /line 2: "motion" names unknown module 9 in "m"/],
+      [motion({ pivot: 8 }), /line 2: "motion" names unknown module 8 in "pivot"/],
+      [motion({ blockers: [3, 7] }), /line 2: "motion" names unknown module 7 in "blockers"/],
+      [motion({ blockers: 3 }), /line 2: "motion" needs a list "blockers"/],
+      [motion({ goal: [1, 0] }), /line 2: "motion" needs "goal"/],
+      [motion({ goal: [1, 0.5, 1] }), /line 2: "motion" needs "goal"/],
+      [motion({ goal: undefined }), /line 2: "motion" needs "goal"/],
+      [motion({ end: 0.5 }), /line 2: "motion" needs an "end" time >= its "t"/],
+      [motion({ end: '2' }), /line 2: "motion" needs an "end"/],
+      [motion({ m: undefined }), /line 2: "motion" names unknown module undefined/],
+    ];
+    for (const [body, pattern] of bad) {
+      const text = syntheticTrace({ modules, events: [{ t: 1, motion: body }] });
+      assert.throws(() => parseTrace(text), pattern, JSON.stringify(body));
+    }
+    assert.throws(() => parseTrace(syntheticTrace({ modules, events: [{ t: 1, motion: 5 }] })), /line 2: "motion" must be an object/);
+  });
+
+  it('accepts a motion that ends when it starts', () => {
+    const trace = parseTrace(syntheticTrace({ modules, events: [{ t: 1, motion: motion({ end: 1, blockers: [] }) }] }));
+    assert.equal(trace.motions.length, 1);
+  });
+});
+
+describe('target shapes in the header', () => {
+  const modules = [module(1, [0, 0, 0])];
+
+  it('reads a list of shapes, each a list of cells', () => {
+    const targets = [[[0, 0, 0], [1, 0, 0]], [[5, 5, 1]]];
+    const trace = parseTrace(syntheticTrace({ modules, header: { targets } }));
+    assert.deepEqual(trace.targets, targets);
+    assert.deepEqual(parseTrace(syntheticTrace({ modules })).targets, [], 'none when the header has none');
+    assert.deepEqual(parseTrace(syntheticTrace({ modules, header: { targets: [] } })).targets, []);
+  });
+
+  it('refuses what is not a list of lists of integer cells, naming the header line', () => {
+    const bad = [
+      [{ cells: [] }, /line 1: "targets" must be a list/],
+      [[5], /line 1: targets\[0\] must be a list of cells/],
+      [[[0, 0, 0]], /line 1: targets\[0\]\[0\] is not a cell \[x,y,z\] of integers: 0/],
+      [[[[0, 0, 0], [1, 0]]], /line 1: targets\[0\]\[1\] is not a cell/],
+      [[[[0, 0, 0]], [[0, 0.5, 0]]], /line 1: targets\[1\]\[0\] is not a cell/],
+      [[[['0', 0, 0]]], /line 1: targets\[0\]\[0\] is not a cell/],
+    ];
+    for (const [targets, pattern] of bad) {
+      assert.throws(() => parseTrace(syntheticTrace({ modules, header: { targets } })), pattern, JSON.stringify(targets));
+    }
+  });
+});
+
+describe('parseTrace on a run with concurrent motions (walkers)', () => {
+  const trace = parseTrace(walkersText());
+
+  it('reads its motions, refusals and target', () => {
+    assert.equal(trace.motions.length, WALKERS.motions);
+    assert.equal(trace.refusals.length, WALKERS.refusals);
+    assert.equal(trace.notes.length, WALKERS.motions, 'one note per motion');
+    assert.deepEqual(trace.targets, [[[3, 1, 1], [4, 1, 1], [3, 2, 1], [4, 2, 1]]]);
+    for (const m of trace.motions) {
+      assert.ok(WALKERS.ids.includes(m.m), `mobile ${m.m}`);
+      assert.ok(m.end > m.t);
+    }
   });
 });

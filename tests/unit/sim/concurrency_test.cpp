@@ -66,6 +66,7 @@ struct Duel {
   world::World world;
   motion::Motion first, second;
   uint32_t firstId = 37, secondId = 38;  // the two movers
+  program::Time secondAt = 500 * program::kMillisecond;
   SimulationOptions options;
   Recorder recorder;
   std::optional<MoveResult> secondResult;
@@ -75,7 +76,7 @@ struct Duel {
   void run() {
     std::map<uint32_t, Script> programs;
     programs[firstId].start = [&](ModuleContext& c) { ASSERT_TRUE(c.move(first).ok()); };
-    programs[secondId].start = [](ModuleContext& c) { c.setTimer(500 * program::kMillisecond, 0); };
+    programs[secondId].start = [&](ModuleContext& c) { c.setTimer(secondAt, 0); };
     programs[secondId].timer = [&](ModuleContext& c, int) { secondResult = c.move(second); };
     programs[secondId].refused = [&](ModuleContext&, const MoveRefusal& r) { laterRefusal = r; };
     Simulator simulator(world, table(), options);
@@ -198,6 +199,22 @@ TEST(Concurrency, BeyondTheLimitARequestWaitsItsTurnInTheQueue) {
   EXPECT_EQ(duel.statistics.motions, 2u);
   EXPECT_EQ(duel.statistics.reservationWait, 1500 * program::kMillisecond);
   EXPECT_EQ(duel.statistics.lastMotionEnd, 4 * program::kSecond);
+}
+
+TEST(Concurrency, AMotionThatStartsWhenAnotherEndsIsNotCountedWithIt) {
+  Duel duel{floorWith({{1, 1, 1}, {4, 4, 1}})};
+  const auto pair = findPair(duel.world, {1, 1, 1}, {4, 4, 1},
+                             [](const auto& a, const auto& b) { return a.goal != b.goal; });
+  ASSERT_TRUE(pair.has_value());
+  std::tie(duel.first, duel.second) = *pair;
+  // The second request's timer runs before the first motion's end, at the same time.
+  duel.secondAt = 2 * program::kSecond;
+  duel.run();
+  ASSERT_TRUE(duel.status.ok()) << duel.status.error();
+  EXPECT_EQ(duel.recorder.starts.at(38), std::vector<program::Time>{2 * program::kSecond});
+  EXPECT_EQ(duel.statistics.motions, 2u);
+  EXPECT_EQ(duel.statistics.maxConcurrentMotions, 1);
+  EXPECT_DOUBLE_EQ(duel.statistics.meanConcurrentMotions(), 1.0);
 }
 
 TEST(Concurrency, AQueuedRequestJudgedAgainWhenItsTurnComesCanBeRefusedLater) {

@@ -1,0 +1,5 @@
+// Formatting shared by the controls.
+
+export function formatSeconds(t) {
+  return `${t.toFixed(2)} s`;
+}

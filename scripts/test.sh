@@ -27,9 +27,16 @@ for flavour in release sanitize; do
     --goal 6,5,2 --start 0,0,2 --seed 3 --jitter-ms 5 --trace "$scratch/$flavour.jsonl" \
     --out "$scratch/$flavour.json"
 done
+for flavour in release sanitize; do
+  "build/$flavour/bin/datomsim" run scenes/walkers.json --program walkers --seed 5 \
+    --trace "$scratch/$flavour-walkers.jsonl" --out "$scratch/$flavour-walkers.json"
+done
 cmp "$scratch/release.jsonl" "$scratch/sanitize.jsonl"
 cmp "$scratch/release.json" "$scratch/sanitize.json"
-echo "traces identical ($(wc -l < "$scratch/release.jsonl") lines)"
+cmp "$scratch/release-walkers.jsonl" "$scratch/sanitize-walkers.jsonl"
+cmp "$scratch/release-walkers.json" "$scratch/sanitize-walkers.json"
+echo "traces identical ($(wc -l < "$scratch/release.jsonl") and" \
+  "$(wc -l < "$scratch/release-walkers.jsonl") lines)"
 
 echo "== benchmarks (smoke run)"
 scripts/bench.sh --smoke

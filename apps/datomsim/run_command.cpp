@@ -19,7 +19,18 @@ std::string runJson(const std::string& program, const experiment::RunResult& res
   nlohmann::ordered_json out;
   out["program"] = program;
   const algorithms::ProgramInfo info = *algorithms::programInfo(program);
-  if (!info.needsGoal) {
+  auto cells = [](const std::vector<geometry::Cell>& list) {
+    nlohmann::ordered_json array = nlohmann::ordered_json::array();
+    for (const geometry::Cell& cell : list) array.push_back({cell.x, cell.y, cell.z});
+    return array;
+  };
+  if (result.reshape) {
+    out["success"] = result.reshape->success;
+    if (!result.reshape->success) out["reason"] = result.reshape->reason;
+    out["final"] = cells(result.reshape->final);
+    out["missing"] = cells(result.reshape->missing);
+    out["extra"] = cells(result.reshape->extra);
+  } else if (!info.needsGoal) {
     nlohmann::ordered_json walkers = nlohmann::ordered_json::array();
     for (const algorithms::WalkerOutcome& walker : result.walkers) {
       walkers.push_back({{"id", walker.id.value},
@@ -96,7 +107,8 @@ void printStatistics(const sim::Statistics& statistics) {
 
 void addRunCommand(CLI::App& app) {
   struct Arguments {
-    std::string scene, program, goal, start, out, trace;
+    std::string scene, program, goal, start, out, trace, target;
+    double timeoutS = 0;
     bool stats = false;
     RuleArguments rules;
     uint64_t seed = 1;
@@ -136,18 +148,34 @@ void addRunCommand(CLI::App& app) {
                    "Motions in flight at once; requests beyond wait in request order "
                    "(default: no limit; 1 gives the sequential baseline)")
       ->check(CLI::PositiveNumber);
+  command->add_option("--target", args->target,
+                      "Take the target from this scene file (its modules are ignored) instead of "
+                      "the scene's own (reconfigure)");
+  command
+      ->add_option("--timeout", args->timeoutS,
+                   "Simulated seconds after which a reconfiguration stops (default: 3600 + 10 per "
+                   "module)")
+      ->check(CLI::PositiveNumber);
   addOutputOption(*command, args->out);
   command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
   command->add_flag("--stats", args->stats,
                     "Print the run's statistics (events by kind, messages by type, motions, "
                     "deformations, simulated and wall time) on standard error");
-  command->callback([args] {
+  command->callback([args, command] {
     experiment::RunRequest request;
     request.program = args->program;
     if (!args->goal.empty()) request.goal = parseCell("--goal", args->goal);
     if (!args->start.empty()) request.start = parseCell("--start", args->start);
     request.simulation.rules = args->rules.options();
     request.simulation.connectivity = request.simulation.rules.connectivity;
+    const algorithms::ProgramInfo info = *algorithms::programInfo(args->program);
+    if (info.reshapes) {
+      // Reconfiguration keeps the ensemble in one piece unless told otherwise; the engine checks
+      // it live, and the modules' gradient judges rules without it (docs/reconfiguration.md).
+      request.simulation.connectivity =
+          args->rules.connectivity == "on" || command->count("--connectivity") == 0;
+      request.simulation.rules.connectivity = false;
+    }
     request.simulation.maxMotions = args->maxMotions;
     request.simulation.seed = args->seed;
     request.simulation.messageDelay = program::Time(args->delayMs * program::kMillisecond);
@@ -155,15 +183,27 @@ void addRunCommand(CLI::App& app) {
     request.trace = !args->trace.empty();
     request.description = fmt::format("{} on {}", args->program, args->scene);
     io::Scene scene = unwrap(io::readScene(args->scene));
-    for (const target::Target& target : scene.targets) {
+    const std::vector<target::Target>& targets =
+        args->target.empty() ? scene.targets : unwrap(io::readScene(args->target)).targets;
+    if (!args->target.empty() && targets.empty()) {
+      throw UsageError(args->target + " has no target");
+    }
+    for (const target::Target& target : targets) {
       request.targets.push_back(unwrap(target.cells()));
     }
+    request.reshape.timeout =
+        args->timeoutS > 0 ? program::Time(args->timeoutS * program::kSecond)
+                           : (3600 + 10 * program::Time(scene.world.size())) * program::kSecond;
     const motion::RuleTable table;
     const experiment::RunResult result =
         unwrap(experiment::runProgram(std::move(scene.world), table, request));
+    // A failed reconfiguration is written like a successful one, to be looked at; then it fails.
     if (request.trace) writeOutput(args->trace, result.trace);
     writeOutput(args->out, runJson(args->program, result));
     if (args->stats) printStatistics(result.statistics);
+    if (result.reshape && !result.reshape->success) {
+      throw UsageError("the target was not built: " + result.reshape->reason);
+    }
   });
 }
 

@@ -15,8 +15,8 @@ namespace {
 template <typename Program>
 class TypedPrograms final : public ProgramSet {
  public:
-  TypedPrograms(const GradientParameters& parameters, size_t moduleCount)
-      : parameters_(parameters) {
+  TypedPrograms(const ProgramParameters& parameters, size_t moduleCount)
+      : parameters_(parameters.gradient), target_(parameters.target) {
     made_.reserve(moduleCount);
   }
 
@@ -57,6 +57,16 @@ class TypedPrograms final : public ProgramSet {
     }
   }
 
+  std::vector<MoverState> movers() const override {
+    std::vector<MoverState> out;
+    if constexpr (std::is_same_v<Program, ReconfigureProgram>) {
+      for (const auto& [id, program] : made_) {
+        if (!program->settled()) out.push_back({id, program->describeState()});
+      }
+    }
+    return out;
+  }
+
   std::vector<WalkerOutcome> walkers() const override {
     std::vector<WalkerOutcome> outcomes;
     if constexpr (std::is_same_v<Program, WalkerProgram>) {
@@ -72,7 +82,7 @@ class TypedPrograms final : public ProgramSet {
   std::optional<std::pair<ModuleId, std::string>> failure() const override {
     for (const auto& [id, program] : made_) {
       // A walker's failure is an outcome of the walk (walkers()), not a failed run.
-      if constexpr (kGradient) {
+      if constexpr (kGradient || std::is_same_v<Program, ReconfigureProgram>) {
         if (id != parameters_.mobile && program->failure()) {
           return std::pair{id, *program->failure()};
         }
@@ -87,22 +97,25 @@ class TypedPrograms final : public ProgramSet {
   std::unique_ptr<Program> makeProgram() const {
     if constexpr (kGradient) {
       return std::make_unique<Program>(parameters_);
+    } else if constexpr (std::is_same_v<Program, ReconfigureProgram>) {
+      return std::make_unique<Program>(target_);
     } else {
       return std::make_unique<Program>();
     }
   }
   GradientParameters parameters_;
+  std::shared_ptr<const TargetShape> target_;
   std::vector<std::pair<ModuleId, const Program*>> made_;  // in the order made: increasing id
 };
 
 template <typename Program>
-std::unique_ptr<ProgramSet> make(const GradientParameters& parameters, size_t moduleCount) {
+std::unique_ptr<ProgramSet> make(const ProgramParameters& parameters, size_t moduleCount) {
   return std::make_unique<TypedPrograms<Program>>(parameters, moduleCount);
 }
 
 struct Entry {
   ProgramInfo info;
-  std::unique_ptr<ProgramSet> (*make)(const GradientParameters&, size_t);
+  std::unique_ptr<ProgramSet> (*make)(const ProgramParameters&, size_t);
 };
 
 const std::array kEntries = {
@@ -116,6 +129,10 @@ const std::array kEntries = {
            "(a test of concurrent motions)",
            false, false},
           make<WalkerProgram>},
+    Entry{{kReconfigure,
+           "the ensemble reshapes itself into the scene's target, many modules moving at once",
+           false, false, true},
+          make<ReconfigureProgram>},
 };
 
 const std::array<ProgramInfo, kEntries.size()> kPrograms = [] {
@@ -146,7 +163,7 @@ Result<ProgramInfo> programInfo(std::string_view name) {
 }
 
 Result<std::unique_ptr<ProgramSet>> makePrograms(std::string_view name,
-                                                 const GradientParameters& parameters,
+                                                 const ProgramParameters& parameters,
                                                  size_t moduleCount) {
   for (const Entry& entry : kEntries) {
     if (entry.info.name == name) return entry.make(parameters, moduleCount);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "algorithms/gradient.h"
+#include "algorithms/reconfigure.h"
 #include "common/result.h"
 #include "geometry/cell.h"
 #include "program/module_program.h"
@@ -22,6 +23,7 @@ namespace datomsim::algorithms {
 inline constexpr std::string_view kGradient = "gradient";
 inline constexpr std::string_view kFollowGradient = "follow-gradient";
 inline constexpr std::string_view kWalkers = "walkers";
+inline constexpr std::string_view kReconfigure = "reconfigure";
 
 struct ProgramInfo {
   std::string_view name;
@@ -31,6 +33,15 @@ struct ProgramInfo {
   // The mobile walks from a start cell: the driver needs --start, and triggers the mobile once
   // the gradient has settled.
   bool mobileWalks = false;
+  // The program reshapes the ensemble into the scene's target: the driver needs a target with as
+  // many cells as modules, and watches the run for the end, a deadlock or a timeout.
+  bool reshapes = false;
+};
+
+// What the programs of a run are told: the gradient's goal and mobile, the target shape.
+struct ProgramParameters {
+  GradientParameters gradient;
+  std::shared_ptr<const TargetShape> target;
 };
 
 // gradient, then follow-gradient.
@@ -44,6 +55,12 @@ struct MobileOutcome {
   bool arrived = false;
   std::optional<std::string> failure;  // why the mobile stopped
   std::string wait;                    // what it waited for when the run ended
+};
+
+// A module of the reconfigure program that has not settled, and what it was doing.
+struct MoverState {
+  ModuleId id;
+  std::string state;
 };
 
 // How one walker of the walkers program fared.
@@ -76,6 +93,8 @@ class ProgramSet {
   virtual std::optional<MobileOutcome> mobile() const = 0;
   // Every walker, by increasing id, for the walkers program.
   virtual std::vector<WalkerOutcome> walkers() const { return {}; }
+  // Every module that has not settled, by increasing id, for the reconfigure program.
+  virtual std::vector<MoverState> movers() const { return {}; }
   // The first module other than the mobile whose program gave up (a refused compression, say),
   // in increasing id order, with its reason: as much a failed run as a stuck mobile.
   virtual std::optional<std::pair<ModuleId, std::string>> failure() const = 0;
@@ -84,7 +103,7 @@ class ProgramSet {
 // The programs of a named algorithm for a world of `moduleCount` modules; refuses an unknown
 // name, listing the known ones.
 Result<std::unique_ptr<ProgramSet>> makePrograms(std::string_view name,
-                                                 const GradientParameters& parameters,
+                                                 const ProgramParameters& parameters,
                                                  size_t moduleCount);
 
 }  // namespace datomsim::algorithms

@@ -63,6 +63,27 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     return Error{std::string(info->name) + " needs a start cell (--start)"};
   }
 
+  std::shared_ptr<const algorithms::TargetShape> shape;
+  if (info->reshapes) {
+    if (request.targets.empty()) {
+      return Error{std::string(info->name) +
+                   " needs a target: the scene has none (add one, or give --target FILE)"};
+    }
+    const std::vector<Cell>& target = request.targets.front();
+    if (target.size() != world.size()) {
+      return Error{
+          fmt::format("the target has {} cells but the scene {} modules: {} needs as many "
+                      "of each",
+                      target.size(), world.size(), info->name)};
+    }
+    for (const Cell& cell : target) {
+      if (!world.isInside(cell)) {
+        return Error{"target cell " + toString(cell) + " is outside the world"};
+      }
+    }
+    shape = std::make_shared<algorithms::TargetShape>(target);
+  }
+
   // The gradient's programs have a goal and a mobile; the others run on the scene as it is.
   std::optional<ModuleId> mobile;
   if (info->needsGoal) {
@@ -78,7 +99,8 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   world.latchAllNeighbours();
 
   auto programs = algorithms::makePrograms(
-      request.program, {request.goal.value_or(Cell{}), mobile.value_or(ModuleId{})}, world.size());
+      request.program, {{request.goal.value_or(Cell{}), mobile.value_or(ModuleId{})}, shape},
+      world.size());
   if (!programs.ok()) return Error{programs.error()};
 
   sim::SimulationOptions options = request.simulation;
@@ -89,16 +111,24 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   if (request.trace) simulator.subscribe(&trace);
   simulator.install((*programs)->factory());
 
-  // The gradient settles first; then, where the mobile walks, it is triggered.
-  simulator.startAll();
-  Status status = simulator.run();
+  RunResult result;
+  Status status = Ok{};
+  if (info->reshapes) {
+    // Watched slice by slice until the target is built or the run stops; a stopped run is a
+    // result too.
+    result.reshape =
+        watchReshape(simulator, table, request.targets.front(), **programs, request.reshape);
+  } else {
+    // The gradient settles first; then, where the mobile walks, it is triggered.
+    simulator.startAll();
+    status = simulator.run();
+  }
   if (status.ok() && info->mobileWalks) {
     simulator.trigger(*mobile, algorithms::FollowGradientProgram::kFollowTrigger);
     status = simulator.run();
   }
   if (!status.ok()) return Error{status.error()};
 
-  RunResult result;
   result.mobile = mobile.value_or(ModuleId{});
   result.statistics = simulator.statistics();
   const world::World& ended = simulator.world();

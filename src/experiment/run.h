@@ -13,6 +13,7 @@
 
 #include "algorithms/registry.h"
 #include "common/result.h"
+#include "experiment/reshape.h"
 #include "geometry/cell.h"
 #include "motion/motion.h"
 #include "sim/simulator.h"
@@ -29,8 +30,10 @@ struct RunRequest {
   sim::SimulationOptions simulation;
   bool trace = false;
   std::string description;
-  // The cells of the scene's target shapes, for the trace's viewer.
+  // The cells of the scene's target shapes: the viewer draws them; reconfigure builds the first.
   std::vector<std::vector<geometry::Cell>> targets;
+  // reconfigure: when the run stops if the target is not built.
+  ReshapeLimits reshape;
 };
 
 struct RunResult {
@@ -41,13 +44,16 @@ struct RunResult {
   std::vector<geometry::Cell> path;
   // walkers: how each walker fared.
   std::vector<algorithms::WalkerOutcome> walkers;
+  // reconfigure: whether the target was built, and the ensemble at the end. A run that does not
+  // build it is still a result (success false, with the reason), so that it can be inspected.
+  std::optional<ReshapeOutcome> reshape;
   sim::Statistics statistics;
   std::string trace;  // JSON Lines, when asked for
 };
 
 // Refuses a goal or start outside the world, an unknown program, follow-gradient without a
-// start, a run stopped by an invariant (the violation's report) and a mobile that fails to
-// arrive.
+// start, reconfigure without a target of as many cells as modules, a run stopped by an invariant
+// (the violation's report) and a mobile that fails to arrive.
 Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
                              const RunRequest& request);
 

@@ -21,7 +21,7 @@ namespace datomsim::program {
 
 class Message {
  public:
-  static constexpr size_t kCapacity = 48;
+  static constexpr size_t kCapacity = 56;
 
   template <typename T>
   static Message of(const T& payload) {

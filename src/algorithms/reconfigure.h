@@ -1,0 +1,211 @@
+// Self-reconfiguration: the ensemble reshapes itself into a target shape, many modules moving at
+// once (docs/reconfiguration.md).
+//
+// Every module knows the target's cells (its description, as in VisibleSim's reconfiguration
+// programs) and senses the cells two steps around it; it knows nothing else of the ensemble but
+// what messages tell it. A module on a target cell stays. The others, the movers, walk the surface
+// down a distance gradient towards the open target cells and fill them:
+//   - A target cell is open when it is empty, some module lies under it, and every target cell
+//     under it is filled: the shape grows from the bottom up, always on support.
+//   - The gradient is the paper's distributed gradient (gradient.h) with many goals: the modules
+//     around each open cell give it distance 0, and distances spread as in the paper. A module
+//     that fills a cell starts a new version of the gradient: the version floods the ensemble, and
+//     every module forgets the old distances and seeds the open cells it senses now. Versions are
+//     ordered (count, then the id of the module that started it), so concurrent fills settle on
+//     one.
+//   - A mover asks the pivots of its valid motions for the distance of each goal, takes the
+//     smallest of the newest version, asks the modules of its deformation list to compress (they
+//     may refuse: busy with another piston, in a motion of their own, or the engine refuses),
+//     moves, and lets them go. It settles on an open target cell. Any refusal, of a helper or of
+//     the engine (a reservation, connectivity), makes it let go of its helpers and try again after
+//     a random wait, from its own random stream.
+//   - A module asked to compress for several motions with the same piston holds it until the last
+//     lets go.
+#pragma once
+
+#include <climits>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "algorithms/routing.h"
+#include "geometry/cell.h"
+#include "program/module_program.h"
+
+namespace datomsim::algorithms {
+
+// The target's cells, shared by every module's program; never changes during a run. Each cell has
+// a rank in the order of filling within its layer: the squared distance of its centre from the
+// centre of the layer's target cells, so that a layer fills from the inside out and its open
+// cells always lie on the edge of what is filled, where movers come from.
+class TargetShape {
+ public:
+  explicit TargetShape(const std::vector<geometry::Cell>& cells);
+  bool contains(const geometry::Cell& cell) const { return cells_.count(cell) > 0; }
+  // The cell's rank; precondition: contains(cell).
+  double rank(const geometry::Cell& cell) const { return cells_.at(cell); }
+  size_t size() const { return cells_.size(); }
+
+ private:
+  struct Hash {
+    size_t operator()(const geometry::Cell& c) const {
+      return (size_t(uint32_t(c.x)) * 73856093u) ^ (size_t(uint32_t(c.y)) * 19349663u) ^
+             (size_t(uint32_t(c.z)) * 83492791u);
+    }
+  };
+  std::unordered_map<geometry::Cell, double, Hash> cells_;
+};
+
+// A new version of the gradient, flooded through latches.
+struct GradientVersion {
+  static constexpr std::string_view kName = "GradientVersion";
+  uint64_t version;
+};
+
+// A distance of the given version, to a latched neighbour around the cell, or routed to one that
+// is not latched.
+struct ShapeDistance {
+  static constexpr std::string_view kName = "ShapeDistance";
+  geometry::Cell cell;
+  int32_t distance;
+  uint64_t version;
+};
+struct ShapeDistanceNotice : RoutedMsg {
+  static constexpr std::string_view kName = "ShapeDistanceNotice";
+  geometry::Cell cell;
+  int32_t distance;
+  uint64_t version;
+};
+
+// A mover asks a pivot for the distance of a goal, and hears it with its version.
+struct GoalQuery {
+  static constexpr std::string_view kName = "GoalQuery";
+  geometry::Cell cell;
+  int32_t candidate;
+};
+struct GoalReply {
+  static constexpr std::string_view kName = "GoalReply";
+  geometry::Cell cell;
+  int32_t candidate;
+  int32_t distance;
+  uint64_t version;
+};
+
+// A module asked to compress cannot (busy, or refused by the engine).
+struct NackDeform : RoutedMsg {
+  static constexpr std::string_view kName = "NackDeform";
+};
+
+class ReconfigureProgram : public program::ModuleProgram {
+ public:
+  static constexpr int32_t kUnknown = INT32_MAX;
+
+  explicit ReconfigureProgram(std::shared_ptr<const TargetShape> target)
+      : target_(std::move(target)) {}
+
+  void onStart(program::ModuleContext& context) override;
+  void onMessage(program::ModuleContext& context, int ownConnector,
+                 const program::Message& message) override;
+  void onTimer(program::ModuleContext& context, int tag) override;
+  void onDeformationDone(program::ModuleContext& context) override;
+  void onMotionDone(program::ModuleContext& context) override;
+  void onMotionRefused(program::ModuleContext& context,
+                       const program::MoveRefusal& refusal) override;
+
+  bool settled() const { return settled_; }
+  int motions() const { return motions_; }
+  int refusals() const { return refusals_; }
+  // What a mover is doing or waiting for, for a run that ends before it settles.
+  std::string describeState() const;
+  const std::optional<std::string>& failure() const { return failure_; }
+
+ private:
+  enum class Phase { kIdle, kWaiting, kAsking, kDeforming, kMoving, kReleasing };
+
+  // The gradient.
+  void adopt(program::ModuleContext& context, uint64_t version);
+  void seedOpenCells(program::ModuleContext& context);
+  void learn(program::ModuleContext& context, int direction, int32_t distance);
+  void spread(program::ModuleContext& context, const geometry::Cell& cell, int32_t distance);
+  // Whether a target cell may be filled now: empty (or held by this module, for its own cell),
+  // some module under it, every target cell under it filled, and every target cell of its layer
+  // next to it and nearer the layer's centre filled.
+  bool isOpen(program::ModuleContext& context, const geometry::Cell& cell) const;
+
+  // The mover.
+  void watch(program::ModuleContext& context);
+  void onWatchdog(program::ModuleContext& context, uint32_t round);
+  void step(program::ModuleContext& context);
+  void choose(program::ModuleContext& context);
+  void retryLater(program::ModuleContext& context);
+  void releaseHelpers(program::ModuleContext& context, bool thenSettle);
+  void afterRelease(program::ModuleContext& context);
+  void settle(program::ModuleContext& context);
+  template <typename T>
+  void sendToHelpers(program::ModuleContext& context, bool acknowledgedOnly);
+
+  // A helper's side.
+  void onDeformRequest(program::ModuleContext& context, const RoutedMsg& request);
+  void onReleaseRequest(program::ModuleContext& context, const RoutedMsg& request);
+  void answer(program::ModuleContext& context, const RoutedMsg& request, bool granted);
+  void grant(program::ModuleContext& context, const RoutedMsg& request);
+  void note(const Status& status);
+
+  std::shared_ptr<const TargetShape> target_;
+  Router router_;
+  uint32_t nextRequest_ = 1;
+
+  // Gradient state.
+  uint64_t version_ = 0;
+  std::array<int32_t, 12> distances_{};
+
+  // Mover state.
+  bool settled_ = false;
+  Phase phase_ = Phase::kIdle;
+  std::vector<motion::Motion> candidates_;
+  std::vector<int32_t> candidateDistances_;
+  std::vector<uint64_t> candidateVersions_;
+  int waitingReplies_ = 0;
+  std::optional<motion::Motion> chosen_;
+  int32_t chosenDistance_ = kUnknown;
+  uint64_t chosenVersion_ = 0;
+  // By helper, in the chosen motion's deformation list: the request sent, answered, granted.
+  std::vector<uint32_t> requests_;
+  std::vector<bool> answered_;
+  std::vector<bool> acknowledged_;
+  int waitingAnswers_ = 0;
+  bool refusedByHelper_ = false;
+  bool retryAfterRelease_ = false;
+  bool settleAfterRelease_ = false;
+  int motions_ = 0;
+  int refusals_ = 0;
+  int idleRounds_ = 0;
+  // The distance of the cell this mover stands on, of the gradient version it learnt it in; a mover
+  // moves down the gradient, and sideways or up only after a few rounds without a way down.
+  int32_t standing_ = kUnknown;
+  uint64_t standingVersion_ = 0;
+  int roundsWithoutDescent_ = 0;
+  uint32_t round_ = 0;
+  int lostReplies_ = 0;  // replies to movers that had moved on
+
+  // Helper state: the piston held, the motions it is held for (each until its lease lapses), and
+  // who waits for it.
+  struct Grant {
+    geometry::Cell origin;
+    uint32_t request;
+    program::Time until;
+  };
+  int heldAxis_ = -1;
+  int holders_ = 0;
+  std::vector<Grant> grants_;
+  bool compressing_ = false;
+  bool releasing_ = false;
+  std::vector<RoutedMsg> waitingForPiston_;
+  std::vector<RoutedMsg> waitingForRest_;
+  std::optional<std::string> failure_;
+};
+
+}  // namespace datomsim::algorithms

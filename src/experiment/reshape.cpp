@@ -1,0 +1,122 @@
+#include "experiment/reshape.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+#include "motion/reach.h"
+
+namespace datomsim::experiment {
+
+using geometry::Cell;
+
+namespace {
+
+size_t filledCount(const world::World& world, const std::vector<Cell>& target) {
+  return size_t(std::count_if(target.begin(), target.end(),
+                              [&](const Cell& cell) { return world.moduleAt(cell) != nullptr; }));
+}
+
+std::string cellList(const std::vector<Cell>& cells, size_t named = 12) {
+  std::string text;
+  for (size_t i = 0; i < std::min(cells.size(), named); ++i) {
+    if (i) text += ' ';
+    text += geometry::toString(cells[i]);
+  }
+  if (cells.size() > named) text += fmt::format(" and {} more", cells.size() - named);
+  return text;
+}
+
+// The missing cells no module that has not settled could reach, were it alone on the settled
+// modules (motion::reach from each missing cell).
+std::vector<Cell> unreachable(const world::World& world, const motion::RuleTable& table,
+                              const std::vector<Cell>& missing,
+                              const std::vector<algorithms::MoverState>& movers,
+                              const motion::RuleOptions& rules) {
+  world::World settled = world;
+  std::vector<Cell> moverCells;
+  for (const algorithms::MoverState& mover : movers) {
+    moverCells.push_back(world.find(mover.id)->cell);
+    if (!settled.remove(mover.id).ok()) return {};
+  }
+  std::vector<Cell> out;
+  for (const Cell& cell : missing) {
+    const auto map = motion::reach(settled, table, cell, rules);
+    const bool reached = map.ok() && std::any_of(moverCells.begin(), moverCells.end(),
+                                                 [&](const Cell& c) { return map->distanceAt(c); });
+    if (!reached) out.push_back(cell);
+  }
+  return out;
+}
+
+}  // namespace
+
+ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& table,
+                            const std::vector<Cell>& target, const algorithms::ProgramSet& programs,
+                            const ReshapeLimits& limits) {
+  ReshapeOutcome outcome;
+  simulator.startAll();
+  size_t filled = filledCount(simulator.world(), target);
+  program::Time lastFill = 0;
+  for (program::Time horizon = limits.slice;; horizon += limits.slice) {
+    const Status status = simulator.run(horizon);
+    if (!status.ok()) {
+      outcome.reason = status.error();
+      break;
+    }
+    const size_t now = filledCount(simulator.world(), target);
+    if (now == target.size()) {
+      outcome.success = true;
+      break;
+    }
+    if (now > filled) {
+      filled = now;
+      lastFill = simulator.now();
+    }
+    const std::vector<algorithms::MoverState> movers = programs.movers();
+    if (horizon - lastFill >= limits.stall || horizon >= limits.timeout) {
+      const bool timedOut = horizon >= limits.timeout;
+      std::string waits;
+      for (size_t i = 0; i < std::min<size_t>(movers.size(), 8); ++i) {
+        waits += fmt::format("{}module {} {}", i ? "; " : "", movers[i].id.value, movers[i].state);
+      }
+      if (movers.size() > 8) waits += fmt::format("; and {} more", movers.size() - 8);
+      std::vector<Cell> missing;
+      for (const Cell& cell : target) {
+        if (!simulator.world().moduleAt(cell)) missing.push_back(cell);
+      }
+      std::sort(missing.begin(), missing.end());
+      const std::vector<Cell> lost =
+          unreachable(simulator.world(), table, missing, movers, simulator.options().rules);
+      if (!timedOut && lost.size() == missing.size()) {
+        outcome.reason = fmt::format("target cells no module can reach: {}", cellList(lost));
+      } else {
+        outcome.reason = fmt::format(
+            "{}: {} of {} target cells filled; {} modules did not settle ({}); empty: {}{}",
+            timedOut ? fmt::format("timeout after {:g} s of simulated time",
+                                   double(limits.timeout) / program::kSecond)
+                     : fmt::format("deadlock: no target cell filled for {:g} s",
+                                   double(limits.stall) / program::kSecond),
+            filled, target.size(), movers.size(), waits, cellList(missing),
+            lost.empty() ? "" : fmt::format("; of which no module can reach {}", cellList(lost)));
+      }
+      break;
+    }
+  }
+
+  // What the ensemble looks like now.
+  const std::set<Cell> shape(target.begin(), target.end());
+  for (const world::Module& module : simulator.world().modules()) {
+    outcome.final.push_back(module.cell);
+    if (!shape.count(module.cell)) outcome.extra.push_back(module.cell);
+  }
+  std::sort(outcome.final.begin(), outcome.final.end());
+  std::sort(outcome.extra.begin(), outcome.extra.end());
+  for (const Cell& cell : shape) {
+    if (!simulator.world().moduleAt(cell)) outcome.missing.push_back(cell);
+  }
+  return outcome;
+}
+
+}  // namespace datomsim::experiment

@@ -1,0 +1,43 @@
+// Watching a reconfiguration run: when it has built the target, or why it stopped.
+//
+// The modules' programs are distributed and never see the whole ensemble; the driver does, like
+// an experimenter watching: it runs the simulation in slices of simulated time and, after each,
+// counts the target cells filled. The run ends when the ensemble occupies exactly the target's
+// cells; it stops early when no target cell has been filled for a while (a deadlock: the report
+// names the modules that did not settle and what each waited for, and the cells left empty, and
+// says which of those no module could reach at all), or when the simulated time runs out.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "algorithms/registry.h"
+#include "geometry/cell.h"
+#include "motion/rule_table.h"
+#include "sim/simulator.h"
+
+namespace datomsim::experiment {
+
+struct ReshapeLimits {
+  program::Time slice = 5 * program::kSecond;
+  // No new cell filled for this long: a deadlock.
+  program::Time stall = 600 * program::kSecond;
+  // The whole run.
+  program::Time timeout = 3600 * program::kSecond;
+};
+
+struct ReshapeOutcome {
+  bool success = false;
+  std::string reason;                   // when it failed
+  std::vector<geometry::Cell> final;    // the occupied cells, sorted
+  std::vector<geometry::Cell> missing;  // target cells left empty
+  std::vector<geometry::Cell> extra;    // occupied cells outside the target
+};
+
+// Runs the simulation until the target is built or the run stops, and says which.
+ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& table,
+                            const std::vector<geometry::Cell>& target,
+                            const algorithms::ProgramSet& programs, const ReshapeLimits& limits);
+
+}  // namespace datomsim::experiment

@@ -18,7 +18,9 @@
 namespace datomsim::app {
 
 void addGeometryCommand(CLI::App& app);
-void addSceneCommands(CLI::App& app);   // generate, convert, info
+void addSceneCommands(CLI::App& app);  // generate, convert, info
+// generate reshape CASE: the reconfiguration cases.
+void addReshapeGenerator(CLI::App& generate);
 void addMotionCommands(CLI::App& app);  // reach, moves, verify
 void addRunCommand(CLI::App& app);
 void addDemoCommand(CLI::App& app);

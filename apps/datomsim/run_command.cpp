@@ -174,7 +174,7 @@ void addRunCommand(CLI::App& app) {
       // it live, and the modules' gradient judges rules without it (docs/reconfiguration.md).
       request.simulation.connectivity =
           args->rules.connectivity == "on" || command->count("--connectivity") == 0;
-      request.simulation.rules.connectivity = false;
+      request.simulation.rules.connectivity = request.simulation.connectivity;
     }
     request.simulation.maxMotions = args->maxMotions;
     request.simulation.seed = args->seed;

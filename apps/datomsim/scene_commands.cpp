@@ -85,8 +85,10 @@ void writeGenerated(world::World world, const std::string& name, const GenerateA
 }
 
 void addGenerate(CLI::App& app) {
-  CLI::App* generate = app.add_subcommand("generate", "Make a scene: box, arch or random");
+  CLI::App* generate =
+      app.add_subcommand("generate", "Make a scene: box, arch, random, or a reshape case");
   generate->require_subcommand(1);
+  addReshapeGenerator(*generate);
 
   struct BoxArguments {
     std::string size, origin = "0,0,0", grid;

@@ -144,6 +144,9 @@ void ReconfigureProgram::spread(program::ModuleContext& context, const Cell& cel
       notice.cell = cell;
       notice.distance = distance;
       notice.version = version_;
+      // Greedy only: a flood to every module around every cell would cost far more than a
+      // distance some module misses (it learns it from the next version, or a neighbour).
+      notice.hopsLeft = kGreedyOnly;
       note(router_.send(context, notice));
     }
   }
@@ -167,9 +170,9 @@ void ReconfigureProgram::onMessage(program::ModuleContext& context, int ownConne
   if (const auto* query = message.as<GoalQuery>()) {
     const auto d = geometry::directionOfOffset(query->cell - context.cell());
     // The mover may have moved on meanwhile: the reply is then lost, and its watchdog copes.
-    const Status replied =
-        context.send(ownConnector, Message::of(GoalReply{query->cell, query->candidate,
-                                                         d ? distances_[*d] : kUnknown, version_}));
+    const Status replied = context.send(
+        ownConnector, Message::of(GoalReply{query->cell, query->candidate,
+                                            d ? distances_[*d] : kUnknown, version_, settled_}));
     if (!replied.ok()) ++lostReplies_;
     return;
   }
@@ -180,6 +183,7 @@ void ReconfigureProgram::onMessage(program::ModuleContext& context, int ownConne
     }
     candidateDistances_[reply->candidate] = reply->distance;
     candidateVersions_[reply->candidate] = reply->version;
+    candidateSettled_[reply->candidate] = reply->pivotSettled;
     if (--waitingReplies_ == 0) choose(context);
     return;
   }
@@ -206,14 +210,14 @@ void ReconfigureProgram::onMessage(program::ModuleContext& context, int ownConne
       if (!granted) refusedByHelper_ = true;
       if (--waitingAnswers_ > 0) return;
       if (refusedByHelper_) {
-        ++refusals_;
+        attemptFailed();
         retryAfterRelease_ = true;
         return releaseHelpers(context, false);
       }
       phase_ = Phase::kMoving;
       const program::MoveResult moved = context.move(*chosen_);
       if (!moved.ok()) {
-        ++refusals_;
+        attemptFailed();
         retryAfterRelease_ = true;
         releaseHelpers(context, false);
       }
@@ -277,7 +281,7 @@ void ReconfigureProgram::onWatchdog(program::ModuleContext& context, uint32_t ro
   } else if (phase_ == Phase::kDeforming) {
     refusedByHelper_ = true;
     waitingAnswers_ = 0;
-    ++refusals_;
+    attemptFailed();
     retryAfterRelease_ = true;
     releaseHelpers(context, false);
   } else if (phase_ == Phase::kReleasing) {
@@ -300,6 +304,7 @@ void ReconfigureProgram::step(program::ModuleContext& context) {
   if (candidates_.empty()) return retryLater(context);
   candidateDistances_.assign(candidates_.size(), kUnknown);
   candidateVersions_.assign(candidates_.size(), 0);
+  candidateSettled_.assign(candidates_.size(), false);
   waitingReplies_ = int(candidates_.size());
   phase_ = Phase::kAsking;
   for (size_t i = 0; i < candidates_.size(); ++i) {
@@ -316,15 +321,40 @@ void ReconfigureProgram::step(program::ModuleContext& context) {
   watch(context);
 }
 
+void ReconfigureProgram::attemptFailed() {
+  ++refusals_;
+  if (!chosen_) return;
+  for (auto& [goal, times] : failedGoals_) {
+    if (goal == chosen_->goal) return void(++times);
+  }
+  failedGoals_.push_back({chosen_->goal, 1});
+}
+
+int64_t ReconfigureProgram::effective(int candidate) const {
+  // A goal whose attempts failed looks farther each time: another way gets its chance.
+  int64_t distance = candidateDistances_[candidate];
+  for (const auto& [goal, times] : failedGoals_) {
+    if (goal == candidates_[candidate].goal) distance += 3 * int64_t(times);
+  }
+  return distance;
+}
+
 void ReconfigureProgram::choose(program::ModuleContext& context) {
   // Asked to make way meanwhile: that comes first.
   if (heldAxis_ >= 0 || compressing_ || releasing_) return retryLater(context);
-  // The smallest distance of the newest version; ties to the first rule in table order.
+  // The smallest distance of the newest version; ties to the first rule in table order. A motion
+  // about a settled pivot comes first: one about another mover climbs onto what will leave.
   const uint64_t newest = *std::max_element(candidateVersions_.begin(), candidateVersions_.end());
   int best = -1;
-  for (size_t i = 0; i < candidates_.size(); ++i) {
-    if (candidateVersions_[i] != newest || candidateDistances_[i] == kUnknown) continue;
-    if (best < 0 || candidateDistances_[i] < candidateDistances_[best]) best = int(i);
+  for (const bool settledPivot : {true, false}) {
+    for (size_t i = 0; i < candidates_.size(); ++i) {
+      if (candidateVersions_[i] != newest || candidateDistances_[i] == kUnknown ||
+          candidateSettled_[i] != settledPivot) {
+        continue;
+      }
+      if (best < 0 || effective(int(i)) < effective(best)) best = int(i);
+    }
+    if (best >= 0) break;
   }
   if (best < 0) {
     phase_ = Phase::kWaiting;
@@ -350,7 +380,7 @@ void ReconfigureProgram::choose(program::ModuleContext& context) {
     phase_ = Phase::kMoving;
     const program::MoveResult moved = context.move(*chosen_);
     if (!moved.ok()) {
-      ++refusals_;
+      attemptFailed();
       chosen_.reset();
       retryLater(context);
     }
@@ -363,15 +393,15 @@ void ReconfigureProgram::choose(program::ModuleContext& context) {
 }
 
 template <typename T>
-void ReconfigureProgram::sendToHelpers(program::ModuleContext& context, bool acknowledgedOnly) {
+void ReconfigureProgram::sendToHelpers(program::ModuleContext& context, bool releasing) {
   for (size_t i = 0; i < chosen_->deformations.size(); ++i) {
-    if (acknowledgedOnly && !acknowledged_[i]) continue;
     const motion::Deformation& d = chosen_->deformations[i];
     T message;
     message.target = d.cell;
     message.origin = context.cell();
-    // A release names the request it ends, so that a helper lets go of that grant only.
-    if (!acknowledgedOnly) requests_[i] = nextRequest_++;
+    // A release names the request it ends, so that a helper lets go of that grant only; the
+    // number mixes in the mover's id, since the mover may have moved (its cell names nothing).
+    if (!releasing) requests_[i] = context.id().value * 0x9E3779B1u + nextRequest_++;
     message.request = requests_[i];
     message.axis = d.firstAxis;
     note(router_.send(context, message));
@@ -386,7 +416,10 @@ void ReconfigureProgram::retryLater(program::ModuleContext& context) {
 
 void ReconfigureProgram::releaseHelpers(program::ModuleContext& context, bool thenSettle) {
   settleAfterRelease_ = thenSettle;
-  waitingAnswers_ = int(std::count(acknowledged_.begin(), acknowledged_.end(), true));
+  // Every helper asked this round, not only those heard from: an answer may have been lost on its
+  // way back (a helper whose piston retracts the connector that faced the mover), and a release
+  // for a request never granted is answered and ignored.
+  waitingAnswers_ = int(requests_.size());
   phase_ = Phase::kReleasing;
   if (waitingAnswers_ == 0) return afterRelease(context);
   sendToHelpers<ReleaseMsg>(context, true);
@@ -411,6 +444,7 @@ void ReconfigureProgram::afterRelease(program::ModuleContext& context) {
 
 void ReconfigureProgram::onMotionDone(program::ModuleContext& context) {
   ++motions_;
+  failedGoals_.clear();
   standing_ = chosenDistance_;
   standingVersion_ = chosenVersion_;
   idleRounds_ = 0;
@@ -420,7 +454,7 @@ void ReconfigureProgram::onMotionDone(program::ModuleContext& context) {
 
 void ReconfigureProgram::onMotionRefused(program::ModuleContext& context,
                                          const program::MoveRefusal&) {
-  ++refusals_;
+  attemptFailed();
   retryAfterRelease_ = true;
   releaseHelpers(context, false);
 }
@@ -459,7 +493,7 @@ void ReconfigureProgram::onDeformRequest(program::ModuleContext& context,
 
 void ReconfigureProgram::grant(program::ModuleContext& context, const RoutedMsg& request) {
   if (grants_.empty()) context.setTimer(kLeaseTime, kLease);
-  grants_.push_back({request.origin, request.request, context.now() + kLeaseTime});
+  grants_.push_back({request.request, context.now() + kLeaseTime});
   ++holders_;
 }
 
@@ -470,7 +504,7 @@ void ReconfigureProgram::onReleaseRequest(program::ModuleContext& context,
   done.origin = context.cell();
   note(router_.send(context, AckRelease{done}));
   const auto granted = std::find_if(grants_.begin(), grants_.end(), [&](const Grant& grant) {
-    return grant.origin == request.origin && grant.request == request.request;
+    return grant.request == request.request;
   });
   if (granted == grants_.end()) return;  // lapsed, or never granted
   grants_.erase(granted);

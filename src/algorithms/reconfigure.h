@@ -92,6 +92,7 @@ struct GoalReply {
   int32_t candidate;
   int32_t distance;
   uint64_t version;
+  bool pivotSettled;  // a pivot that will still be there
 };
 
 // A module asked to compress cannot (busy, or refused by the engine).
@@ -141,11 +142,16 @@ class ReconfigureProgram : public program::ModuleProgram {
   void step(program::ModuleContext& context);
   void choose(program::ModuleContext& context);
   void retryLater(program::ModuleContext& context);
+  // An attempt failed (a helper refused or was silent, the engine refused): counted, and its goal
+  // remembered until the next motion succeeds.
+  void attemptFailed();
+  // A candidate's distance with the failures at its goal counted against it.
+  int64_t effective(int candidate) const;
   void releaseHelpers(program::ModuleContext& context, bool thenSettle);
   void afterRelease(program::ModuleContext& context);
   void settle(program::ModuleContext& context);
   template <typename T>
-  void sendToHelpers(program::ModuleContext& context, bool acknowledgedOnly);
+  void sendToHelpers(program::ModuleContext& context, bool releasing);
 
   // A helper's side.
   void onDeformRequest(program::ModuleContext& context, const RoutedMsg& request);
@@ -168,6 +174,7 @@ class ReconfigureProgram : public program::ModuleProgram {
   std::vector<motion::Motion> candidates_;
   std::vector<int32_t> candidateDistances_;
   std::vector<uint64_t> candidateVersions_;
+  std::vector<bool> candidateSettled_;
   int waitingReplies_ = 0;
   std::optional<motion::Motion> chosen_;
   int32_t chosenDistance_ = kUnknown;
@@ -188,14 +195,14 @@ class ReconfigureProgram : public program::ModuleProgram {
   int32_t standing_ = kUnknown;
   uint64_t standingVersion_ = 0;
   int roundsWithoutDescent_ = 0;
+  std::vector<std::pair<geometry::Cell, int>> failedGoals_;
   uint32_t round_ = 0;
   int lostReplies_ = 0;  // replies to movers that had moved on
 
   // Helper state: the piston held, the motions it is held for (each until its lease lapses), and
   // who waits for it.
   struct Grant {
-    geometry::Cell origin;
-    uint32_t request;
+    uint32_t request;  // the mover's request number, unique to the mover
     program::Time until;
   };
   int heldAxis_ = -1;

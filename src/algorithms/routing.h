@@ -25,7 +25,7 @@ struct RoutedMsg {
   geometry::Cell origin;  // where the answer goes
   uint32_t request = 0;   // the origin's request number
   int8_t axis = -1;       // a world piston axis, for DeformMsg
-  int8_t hopsLeft = 0;    // for flooding
+  int8_t hopsLeft = 0;    // for flooding; kGreedyOnly: dropped where greedy routing stalls
   // While flooding, the farthest a copy may be from the target (squaredDistance4); 0: greedy.
   // 16 bits keep the routed messages with the most payload within a message's capacity.
   uint16_t floodBound = 0;
@@ -45,6 +45,10 @@ struct ReleaseMsg : RoutedMsg {
 struct AckRelease : RoutedMsg {
   static constexpr std::string_view kName = "AckRelease";
 };
+
+// A routed message that never floods: cheap, for information that may be lost (a distance some
+// other module will also tell).
+inline constexpr int8_t kGreedyOnly = -1;
 
 class Router {
  public:

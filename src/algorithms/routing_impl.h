@@ -59,6 +59,7 @@ Status Router::forward(program::ModuleContext& context, const RoutedMsg& routed,
       }
     }
     if (best >= 0) return sendThrough(best, routed);
+    if (routed.hopsLeft == kGreedyOnly) return Ok{};
   }
   // No neighbour is nearer: flood, each module forwarding once, within the hop limit and the
   // ball around the target.

@@ -1,0 +1,96 @@
+// `generate reshape CASE`: the reconfiguration cases of docs/reconfiguration.md, each a scene whose
+// first target is the shape to build, with as many cells as the scene has modules.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+#include "io/scene_file.h"
+#include "scene/reshape.h"
+#include "target/target.h"
+
+namespace datomsim::app {
+namespace {
+
+struct ReshapeArguments {
+  std::string kase, out, floor = "12,12";
+  int length = 8;
+  int modules = 20;
+  int side = 96;
+  uint64_t seed = 1;
+};
+
+void write(scene::ReshapeCase reshape, target::Target target, const std::string& out) {
+  io::Scene scene;
+  scene.world = std::move(reshape.world);
+  scene.name = "reshape: " + reshape.description;
+  scene.description = reshape.description;
+  scene.targets.push_back(std::move(target));
+  check(io::writeScene(scene, out));
+  fmt::print(stderr, "wrote {} ({} modules; {})\n", out, scene.world.size(), reshape.description);
+}
+
+// A heap in the floor's corner into a cylinder in its middle, the target written in CSG: the
+// floor's slab and the cylinder on top (docs/file-formats.md explains how CSG maps to cells).
+void writeHeapToCylinder(int floorX, int floorY, const std::string& out) {
+  const double radius = std::min(floorX, floorY) / 6.0;
+  const std::string content =
+      fmt::format("union() {{ cube([{},{},0.7]); translate([{},{},0.7]) cylinder(2.2,{:g}); }}",
+                  floorX, floorY, floorX * 0.6, floorY * 0.6, radius);
+  target::Target target = unwrap(target::Target::csg(content));
+  const std::vector<geometry::Cell> cells = unwrap(target.cells());
+  const int onTop = int(std::count_if(cells.begin(), cells.end(),
+                                      [](const geometry::Cell& cell) { return cell.z > 0; }));
+  if (int(cells.size()) - onTop != floorX * floorY) {
+    throw UsageError("the cylinder's CSG does not cover the floor exactly");
+  }
+  scene::ReshapeCase reshape{unwrap(scene::heapOnFloor(floorX, floorY, onTop)), cells,
+                             fmt::format("a heap of {} modules into a cylinder on a floor {} by {}",
+                                         onTop, floorX, floorY)};
+  write(std::move(reshape), std::move(target), out);
+}
+
+}  // namespace
+
+void addReshapeGenerator(CLI::App& generate) {
+  auto args = std::make_shared<ReshapeArguments>();
+  CLI::App* command = generate.add_subcommand(
+      "reshape",
+      "A reconfiguration case: a scene and, as its target, the shape to build (arch2, arch1, "
+      "line, heap, random, pyramid)");
+  command->add_option("case", args->kase, "arch2, arch1, line, heap, random or pyramid")
+      ->required()
+      ->check(CLI::IsMember({"arch2", "arch1", "line", "heap", "random", "pyramid"}));
+  command->add_option("-o,--out", args->out, "Scene file to write (.xml or .json)")->required();
+  command->add_option("--length", args->length, "line: modules in the line (a multiple of 4)")
+      ->capture_default_str();
+  command->add_option("--floor", args->floor, "heap, random: the floor's size X,Y")
+      ->capture_default_str();
+  command->add_option("--modules", args->modules, "random: modules to move")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--seed", args->seed, "random: the seed")->capture_default_str();
+  command->add_option("--side", args->side, "pyramid: the floor's side")->capture_default_str();
+  command->callback([args] {
+    const std::string& kase = args->kase;
+    auto floorSize = [&] {
+      const geometry::Cell size = parseCell("--floor", args->floor + ",1");
+      return std::pair{size.x, size.y};
+    };
+    if (kase == "heap") {
+      const auto [x, y] = floorSize();
+      return writeHeapToCylinder(x, y, args->out);
+    }
+    scene::ReshapeCase reshape =
+        kase == "arch2"     ? unwrap(scene::archFromLayer(2))
+        : kase == "arch1"   ? unwrap(scene::archFromLayer(1))
+        : kase == "line"    ? unwrap(scene::lineToBlock(args->length))
+        : kase == "pyramid" ? unwrap(scene::cornerToPyramid(args->side))
+                            : unwrap(scene::randomReshape(floorSize().first, floorSize().second,
+                                                          args->modules, args->seed));
+    target::Target target = unwrap(target::Target::grid(reshape.target));
+    write(std::move(reshape), std::move(target), args->out);
+  });
+}
+
+}  // namespace datomsim::app

@@ -1,0 +1,200 @@
+#include "scene/reshape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "common/random.h"
+#include "geometry/lattice.h"
+#include "scene/box.h"
+#include "scene/paper_arch.h"
+
+namespace datomsim::scene {
+
+using geometry::Cell;
+
+namespace {
+
+constexpr Color kMover{255, 160, 32};
+
+Status addModule(world::World& world, const Cell& cell, Color color = kMover) {
+  world::Module module;
+  module.id = world.nextFreeId();
+  module.cell = cell;
+  module.color = color;
+  return world.add(module);
+}
+
+// The floor's cells, which stay: the first part of every target.
+std::vector<Cell> floorCells(int floorX, int floorY) {
+  std::vector<Cell> cells;
+  for (int y = 0; y < floorY; ++y) {
+    for (int x = 0; x < floorX; ++x) cells.push_back({x, y, 0});
+  }
+  return cells;
+}
+
+Result<world::World> floorWorld(int floorX, int floorY) {
+  if (floorX < 2 || floorY < 2) return Error{"a floor must be at least 2 by 2"};
+  return box({floorX, floorY, 1});
+}
+
+}  // namespace
+
+Result<ReshapeCase> archFromLayer(int holeHeight) {
+  auto arch = paperArch(holeHeight);
+  if (!arch.ok()) return Error{arch.error()};
+  ReshapeCase reshape{world::World(arch->bounds()), {}, {}};
+  std::vector<Cell> obstacle;
+  for (const world::Module& module : arch->modules()) {
+    if (module.id == kPaperMobile) continue;
+    if (module.cell.z >= 2) {
+      obstacle.push_back(module.cell);
+    } else {
+      const Status added = reshape.world.add(module);
+      if (!added.ok()) return Error{added.error()};
+      reshape.target.push_back(module.cell);
+    }
+  }
+  // The layer on top of the box: the cells of z = 2 that four box modules hold, row by row.
+  int placed = 0;
+  for (int y = 1; y <= 6 && placed < int(obstacle.size()); ++y) {
+    for (int x = 1; x <= 6 && placed < int(obstacle.size()); ++x, ++placed) {
+      const Status added = addModule(reshape.world, {x, y, 2});
+      if (!added.ok()) return Error{added.error()};
+    }
+  }
+  reshape.target.insert(reshape.target.end(), obstacle.begin(), obstacle.end());
+  reshape.description = "the paper's arch (hole " + std::to_string(holeHeight) +
+                        " high) to build from " + std::to_string(obstacle.size()) +
+                        " modules lying on its box";
+  return reshape;
+}
+
+Result<ReshapeCase> lineToBlock(int length) {
+  if (length < 8 || length % 4 != 0) {
+    return Error{"a line to reshape into a block has a multiple of 4 modules, at least 8, not " +
+                 std::to_string(length)};
+  }
+  const int width = length / 4;
+  const int floorX = length + 4;
+  auto floor = floorWorld(floorX, 8);
+  if (!floor.ok()) return Error{floor.error()};
+  ReshapeCase reshape{std::move(*floor), floorCells(floorX, 8), {}};
+  for (int x = 1; x <= length; ++x) {
+    const Status added = addModule(reshape.world, {x, 1, 1});
+    if (!added.ok()) return Error{added.error()};
+  }
+  // Two layers of width x 2, at the far end of the floor from the line's start.
+  for (int z = 1; z <= 2; ++z) {
+    for (int y = 4; y <= 5; ++y) {
+      for (int x = length - width; x < length; ++x) reshape.target.push_back({x, y, z});
+    }
+  }
+  reshape.description = "a line of " + std::to_string(length) + " modules into a block " +
+                        std::to_string(width) + " by 2 by 2";
+  return reshape;
+}
+
+Result<world::World> heapOnFloor(int floorX, int floorY, int count) {
+  auto world = floorWorld(floorX, floorY);
+  if (!world.ok()) return Error{world.error()};
+  // Layers of squares in the corner, each one smaller and one higher, until `count` are placed.
+  int side = 1;
+  while (side * (side + 1) * (2 * side + 1) / 6 < count) ++side;
+  if (side > std::min(floorX, floorY) - 1) {
+    return Error{"the floor is too small for a heap of " + std::to_string(count) + " modules"};
+  }
+  int placed = 0;
+  for (int z = 1; placed < count; ++z) {
+    const int layer = side - z + 1;
+    for (int y = 0; y < layer && placed < count; ++y) {
+      for (int x = 0; x < layer && placed < count; ++x, ++placed) {
+        const Status added = addModule(*world, {x, y, z});
+        if (!added.ok()) return Error{added.error()};
+      }
+    }
+  }
+  return world;
+}
+
+Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t seed) {
+  if (count < 1 || count > (floorX - 1) * (floorY - 1) / 2) {
+    return Error{"a random reshape of " + std::to_string(count) +
+                 " modules needs a floor with at "
+                 "least twice as many cells on top"};
+  }
+  auto floor = floorWorld(floorX, floorY);
+  if (!floor.ok()) return Error{floor.error()};
+  ReshapeCase reshape{std::move(*floor), floorCells(floorX, floorY), {}};
+  Random random = Random::stream(seed, 1);
+  // The cells on top that four floor modules hold.
+  auto onTop = [&](const Cell& cell) {
+    return cell.z == 1 && cell.x >= 0 && cell.y >= 0 && cell.x <= floorX - 2 &&
+           cell.y <= floorY - 2;
+  };
+  auto randomTop = [&]() {
+    return Cell{int(random.below(uint64_t(floorX - 1))), int(random.below(uint64_t(floorY - 1))),
+                1};
+  };
+  std::set<Cell> movers;
+  while (int(movers.size()) < count) movers.insert(randomTop());
+  for (const Cell& cell : movers) {
+    const Status added = addModule(reshape.world, cell);
+    if (!added.ok()) return Error{added.error()};
+  }
+  // The target grows from a random cell: a random neighbour of the cells so far, on the layer, or
+  // now and then one layer up where four target cells hold it.
+  std::vector<Cell> grown = {randomTop()};
+  std::set<Cell> shape(grown.begin(), grown.end());
+  while (int(grown.size()) < count) {
+    const Cell from = grown[random.below(grown.size())];
+    Cell next = from + geometry::neighbourOffset(int(random.below(geometry::kDirectionCount)));
+    if (next.z == 2) {
+      bool held = true;
+      for (int below = 8; below < 12; ++below) {
+        held = held && shape.count(next + geometry::neighbourOffset(below));
+      }
+      if (!held || random.below(4) != 0) continue;
+    } else if (!onTop(next)) {
+      continue;
+    }
+    if (shape.insert(next).second) grown.push_back(next);
+  }
+  reshape.target.insert(reshape.target.end(), grown.begin(), grown.end());
+  reshape.description = "a floor " + std::to_string(floorX) + " by " + std::to_string(floorY) +
+                        ": " + std::to_string(count) +
+                        " modules at random into a random shape (seed " + std::to_string(seed) +
+                        ")";
+  return reshape;
+}
+
+Result<ReshapeCase> cornerToPyramid(int side) {
+  if (side < 8) return Error{"a floor for a pyramid is at least 8 by 8"};
+  const int base = side / 8;
+  int pyramid = 0;
+  for (int layer = base; layer >= 1; --layer) pyramid += layer * layer;
+  auto floor = floorWorld(side, side);
+  if (!floor.ok()) return Error{floor.error()};
+  ReshapeCase reshape{std::move(*floor), floorCells(side, side), {}};
+  // The block in the corner: rows as wide as its square root.
+  const int width = int(std::ceil(std::sqrt(double(pyramid))));
+  for (int placed = 0; placed < pyramid; ++placed) {
+    const Status added = addModule(reshape.world, {placed % width, placed / width, 1});
+    if (!added.ok()) return Error{added.error()};
+  }
+  // The pyramid in the middle: layer z is a square of base - z + 1 cells a side.
+  const int origin = side / 2 - base / 2;
+  for (int z = 1; z <= base; ++z) {
+    for (int y = 0; y <= base - z; ++y) {
+      for (int x = 0; x <= base - z; ++x) reshape.target.push_back({origin + x, origin + y, z});
+    }
+  }
+  reshape.description = "a floor " + std::to_string(side) + " by " + std::to_string(side) +
+                        " whose corner block of " + std::to_string(pyramid) +
+                        " modules becomes a pyramid of base " + std::to_string(base);
+  return reshape;
+}
+
+}  // namespace datomsim::scene

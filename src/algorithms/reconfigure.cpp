@@ -26,8 +26,16 @@ constexpr program::Time kLeaseTime = 60 * program::kSecond;
 constexpr Color kMoving{255, 160, 32};
 constexpr Color kSettled{96, 160, 255};
 
-uint64_t versionAfter(uint64_t version, ModuleId by) {
-  return ((version >> 32) + 1) << 32 | by.value;
+// Versions of the gradient are numbered by period of simulated time: every module that fills a
+// cell during a period asks for the version of the next one, at its start, so that one flood
+// carries the fills of a whole period (docs/reconfiguration.md).
+constexpr program::Time kVersionPeriod = 20 * 1000 * program::kMillisecond;
+constexpr int kNewVersion = 4;
+constexpr int kSpread = 6;
+constexpr program::Time kSpreadDelay = 30 * program::kMillisecond;
+
+uint64_t nextVersion(program::Time now) {
+  return uint64_t(now / kVersionPeriod) + 1;
 }
 
 }  // namespace
@@ -51,7 +59,8 @@ void ReconfigureProgram::onStart(program::ModuleContext& context) {
   distances_.fill(kUnknown);
   settled_ = target_->contains(context.cell());
   // Every module starts with the first version at once: no flood is needed for it.
-  adopt(context, uint64_t{1} << 32);
+  adopt(context, 0);
+  seedOpenCells(context);
   if (settled_) return;
   context.setColor(kMoving);
   phase_ = Phase::kWaiting;
@@ -114,7 +123,9 @@ void ReconfigureProgram::learn(program::ModuleContext& context, int direction, i
     if (value >= distances_[d]) continue;
     distances_[d] = value;
     const Cell cell = context.cell() + geometry::neighbourOffset(d);
-    spread(context, cell, value);
+    // Told a moment later, with what has improved meanwhile: one message for several waves.
+    if (!unspread_) context.setTimer(kSpreadDelay, kSpread);
+    unspread_ |= uint16_t(1u << d);
     std::array<Cell, 6> goals;
     const int count = context.goalsAsPivot(cell, goals);
     for (int i = 0; i < count; ++i) {
@@ -243,6 +254,17 @@ void ReconfigureProgram::onMessage(program::ModuleContext& context, int ownConne
 
 void ReconfigureProgram::onTimer(program::ModuleContext& context, int tag) {
   if (tag >= kWatchdog) return onWatchdog(context, uint32_t(tag - kWatchdog));
+  if (tag == kNewVersion) return adopt(context, nextVersion(context.now() - 1));
+  if (tag == kSpread) {
+    const uint16_t cells = unspread_;
+    unspread_ = 0;
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      if ((cells & (1u << d)) && distances_[d] != kUnknown) {
+        spread(context, context.cell() + geometry::neighbourOffset(d), distances_[d]);
+      }
+    }
+    return;
+  }
   if (tag == kLease) {
     // Grants whose mover never came back lapse; the piston goes when none is left.
     const program::Time now = context.now();
@@ -331,12 +353,14 @@ void ReconfigureProgram::attemptFailed() {
 }
 
 int64_t ReconfigureProgram::effective(int candidate) const {
-  // A goal whose attempts failed looks farther each time: another way gets its chance.
-  int64_t distance = candidateDistances_[candidate];
+  // In quarter motions: a goal whose attempts failed looks farther each time, so that another way
+  // gets its chance; between goals as near, the one that needs fewer helpers.
+  int64_t cost = 4 * int64_t(candidateDistances_[candidate]) +
+                 int64_t(candidates_[candidate].deformations.size());
   for (const auto& [goal, times] : failedGoals_) {
-    if (goal == candidates_[candidate].goal) distance += 3 * int64_t(times);
+    if (goal == candidates_[candidate].goal) cost += 12 * int64_t(times);
   }
-  return distance;
+  return cost;
 }
 
 void ReconfigureProgram::choose(program::ModuleContext& context) {
@@ -463,8 +487,12 @@ void ReconfigureProgram::settle(program::ModuleContext& context) {
   settled_ = true;
   phase_ = Phase::kIdle;
   context.setColor(kSettled);
-  // The cell it fills is closed and new ones may open: a new version of the gradient.
-  adopt(context, versionAfter(version_, context.id()));
+  // The cell it fills is closed and new ones may open: a new version of the gradient, at the
+  // start of the next period.
+  const uint64_t version = nextVersion(context.now());
+  if (version > version_) {
+    context.setTimer(program::Time(version) * kVersionPeriod - context.now(), kNewVersion);
+  }
 }
 
 // ---- A helper's side ------------------------------------------------------------------------

@@ -167,6 +167,7 @@ class ReconfigureProgram : public program::ModuleProgram {
   // Gradient state.
   uint64_t version_ = 0;
   std::array<int32_t, 12> distances_{};
+  uint16_t unspread_ = 0;  // neighbour cells whose new distance is still to tell
 
   // Mover state.
   bool settled_ = false;

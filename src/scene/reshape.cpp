@@ -17,6 +17,9 @@ using geometry::Cell;
 namespace {
 
 constexpr Color kMover{255, 160, 32};
+// A module that starts on a target cell: where it already belongs (the reconfigure program's
+// colour of a settled module).
+constexpr Color kInPlace{96, 160, 255};
 
 Status addModule(world::World& world, const Cell& cell, Color color = kMover) {
   world::Module module;
@@ -58,10 +61,12 @@ Result<ReshapeCase> archFromLayer(int holeHeight) {
     }
   }
   // The layer on top of the box: the cells of z = 2 that four box modules hold, row by row.
+  const std::set<Cell> shape(obstacle.begin(), obstacle.end());
   int placed = 0;
   for (int y = 1; y <= 6 && placed < int(obstacle.size()); ++y) {
     for (int x = 1; x <= 6 && placed < int(obstacle.size()); ++x, ++placed) {
-      const Status added = addModule(reshape.world, {x, y, 2});
+      const Cell cell{x, y, 2};
+      const Status added = addModule(reshape.world, cell, shape.count(cell) ? kInPlace : kMover);
       if (!added.ok()) return Error{added.error()};
     }
   }

@@ -1,0 +1,115 @@
+// Self-reconfiguration on the cases of docs/reconfiguration.md, every invariant checked at every
+// event by the simulator (a violation would end the run with its report).
+#include "algorithms/reconfigure.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "experiment/run.h"
+#include "scene/reshape.h"
+#include "support/world_builder.h"
+
+namespace datomsim::algorithms {
+namespace {
+
+using geometry::Cell;
+
+const motion::RuleTable& table() {
+  static const motion::RuleTable kTable;
+  return kTable;
+}
+
+experiment::RunRequest reconfigure(const std::vector<Cell>& target, uint64_t seed = 1) {
+  experiment::RunRequest request;
+  request.program = std::string(kReconfigure);
+  request.targets = {target};
+  request.simulation.seed = seed;
+  request.simulation.connectivity = true;
+  request.simulation.rules.connectivity = true;
+  return request;
+}
+
+// The run built exactly the target.
+void expectBuilt(const experiment::RunResult& run, std::vector<Cell> target) {
+  ASSERT_TRUE(run.reshape.has_value());
+  EXPECT_TRUE(run.reshape->success) << run.reshape->reason;
+  std::sort(target.begin(), target.end());
+  EXPECT_EQ(run.reshape->final, target);
+  EXPECT_TRUE(run.reshape->missing.empty());
+  EXPECT_TRUE(run.reshape->extra.empty());
+  EXPECT_GT(run.statistics.motions, 0u);
+}
+
+TEST(Reconfigure, ALineBecomesABlock) {
+  scene::ReshapeCase reshape = *scene::lineToBlock(8);
+  const auto run = experiment::runProgram(reshape.world, table(), reconfigure(reshape.target));
+  ASSERT_TRUE(run.ok()) << run.error();
+  expectBuilt(*run, reshape.target);
+  EXPECT_GE(run->statistics.maxConcurrentMotions, 2);
+}
+
+TEST(Reconfigure, ThePapersArchIsBuiltFromALayerOnItsBoxManyModulesAtOnce) {
+  for (const int hole : {2, 1}) {
+    scene::ReshapeCase reshape = *scene::archFromLayer(hole);
+    auto request = reconfigure(reshape.target);
+    request.trace = true;
+    const auto run = experiment::runProgram(reshape.world, table(), request);
+    ASSERT_TRUE(run.ok()) << run.error();
+    expectBuilt(*run, reshape.target);
+    EXPECT_GE(run->statistics.maxConcurrentMotions, 4) << "hole " << hole;
+    // The same seed, the same run.
+    const auto again = experiment::runProgram(reshape.world, table(), request);
+    EXPECT_EQ(again->trace, run->trace);
+  }
+}
+
+TEST(Reconfigure, OneMotionAtATimeIsSlower) {
+  scene::ReshapeCase reshape = *scene::archFromLayer(2);
+  auto request = reconfigure(reshape.target);
+  const auto parallel = experiment::runProgram(reshape.world, table(), request);
+  request.simulation.maxMotions = 1;
+  const auto sequential = experiment::runProgram(reshape.world, table(), request);
+  ASSERT_TRUE(parallel.ok() && sequential.ok());
+  expectBuilt(*sequential, reshape.target);
+  EXPECT_EQ(sequential->statistics.maxConcurrentMotions, 1);
+  EXPECT_GT(sequential->statistics.lastMotionEnd, parallel->statistics.lastMotionEnd * 3 / 2);
+}
+
+TEST(Reconfigure, ATargetCellNoModuleCanReachStopsTheRunWithTheCell) {
+  // A floor with one module on it, whose target keeps the floor and floats a cell in the air.
+  testing::WorldBuilder builder;
+  builder.box({0, 0, 0}, {5, 5, 1}).module({1, 1, 1});
+  world::World world = builder.build();
+  std::vector<Cell> target;
+  for (const world::Module& module : world.modules()) {
+    if (module.cell.z == 0) target.push_back(module.cell);
+  }
+  target.push_back({2, 2, 3});
+  auto request = reconfigure(target);
+  request.reshape.stall = 60 * program::kSecond;
+  const auto run = experiment::runProgram(std::move(world), table(), request);
+  ASSERT_TRUE(run.ok()) << run.error();
+  ASSERT_TRUE(run->reshape.has_value());
+  EXPECT_FALSE(run->reshape->success);
+  EXPECT_EQ(run->reshape->reason, "target cells no module can reach: 2,2,3");
+  EXPECT_EQ(run->reshape->missing, (std::vector<Cell>{Cell{2, 2, 3}}));
+  EXPECT_EQ(run->reshape->extra, (std::vector<Cell>{Cell{1, 1, 1}}));
+}
+
+TEST(Reconfigure, RefusesATargetOfAnotherSizeOrNone) {
+  scene::ReshapeCase reshape = *scene::lineToBlock(8);
+  auto request = reconfigure({reshape.target.begin(), reshape.target.end() - 1});
+  const auto smaller = experiment::runProgram(reshape.world, table(), request);
+  ASSERT_FALSE(smaller.ok());
+  EXPECT_NE(smaller.error().find("the target has 103 cells but the scene 104 modules"),
+            std::string::npos)
+      << smaller.error();
+  request.targets.clear();
+  const auto none = experiment::runProgram(reshape.world, table(), request);
+  ASSERT_FALSE(none.ok());
+  EXPECT_NE(none.error().find("needs a target"), std::string::npos) << none.error();
+}
+
+}  // namespace
+}  // namespace datomsim::algorithms

@@ -17,6 +17,7 @@ struct ReshapeArguments {
   int length = 8;
   int modules = 20;
   int side = 96;
+  int base = 0;
   uint64_t seed = 1;
 };
 
@@ -35,7 +36,7 @@ void write(scene::ReshapeCase reshape, target::Target target, const std::string&
 void writeHeapToCylinder(int floorX, int floorY, const std::string& out) {
   const double radius = std::min(floorX, floorY) / 6.0;
   const std::string content =
-      fmt::format("union() {{ cube([{},{},0.7]); translate([{},{},0.7]) cylinder(2.2,{:g}); }}",
+      fmt::format("union() {{ cube([{},{},0.7]); translate([{:g},{:g},0.7]) cylinder(2.2,{:g}); }}",
                   floorX, floorY, floorX * 0.6, floorY * 0.6, radius);
   target::Target target = unwrap(target::Target::csg(content));
   const std::vector<geometry::Cell> cells = unwrap(target.cells());
@@ -67,10 +68,12 @@ void addReshapeGenerator(CLI::App& generate) {
   command->add_option("--floor", args->floor, "heap, random: the floor's size X,Y")
       ->capture_default_str();
   command->add_option("--modules", args->modules, "random: modules to move")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Range(1, 10000000))
       ->capture_default_str();
   command->add_option("--seed", args->seed, "random: the seed")->capture_default_str();
   command->add_option("--side", args->side, "pyramid: the floor's side")->capture_default_str();
+  command->add_option("--base", args->base, "pyramid: the pyramid's base (default: side / 8)")
+      ->check(CLI::Range(1, 10000));
   command->callback([args] {
     const std::string& kase = args->kase;
     auto floorSize = [&] {
@@ -85,7 +88,7 @@ void addReshapeGenerator(CLI::App& generate) {
         kase == "arch2"     ? unwrap(scene::archFromLayer(2))
         : kase == "arch1"   ? unwrap(scene::archFromLayer(1))
         : kase == "line"    ? unwrap(scene::lineToBlock(args->length))
-        : kase == "pyramid" ? unwrap(scene::cornerToPyramid(args->side))
+        : kase == "pyramid" ? unwrap(scene::cornerToPyramid(args->side, args->base))
                             : unwrap(scene::randomReshape(floorSize().first, floorSize().second,
                                                           args->modules, args->seed));
     target::Target target = unwrap(target::Target::grid(reshape.target));

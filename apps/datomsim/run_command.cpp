@@ -154,7 +154,7 @@ void addRunCommand(CLI::App& app) {
   command
       ->add_option("--timeout", args->timeoutS,
                    "Simulated seconds after which a reconfiguration stops (default: 3600 + 10 per "
-                   "module)")
+                   "module, times the movers per --max-motions slot)")
       ->check(CLI::PositiveNumber);
   addOutputOption(*command, args->out);
   command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
@@ -191,9 +191,8 @@ void addRunCommand(CLI::App& app) {
     for (const target::Target& target : targets) {
       request.targets.push_back(unwrap(target.cells()));
     }
-    request.reshape.timeout =
-        args->timeoutS > 0 ? program::Time(args->timeoutS * program::kSecond)
-                           : (3600 + 10 * program::Time(scene.world.size())) * program::kSecond;
+    if (args->timeoutS > 0)
+      request.reshape.timeout = program::Time(args->timeoutS * program::kSecond);
     const motion::RuleTable table;
     const experiment::RunResult result =
         unwrap(experiment::runProgram(std::move(scene.world), table, request));

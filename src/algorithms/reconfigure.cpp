@@ -17,6 +17,7 @@ namespace {
 constexpr int kStep = 1;
 constexpr int kReleaseAgain = 2;
 constexpr int kLease = 3;
+constexpr int kRenew = 5;
 // Tags from here on are a mover's watchdog for one round of asking, deforming or releasing.
 constexpr int kWatchdog = 1000;
 // How long a mover waits for answers before it gives a round up.
@@ -33,6 +34,7 @@ constexpr program::Time kVersionPeriod = 20 * 1000 * program::kMillisecond;
 constexpr int kNewVersion = 4;
 constexpr int kSpread = 6;
 constexpr program::Time kSpreadDelay = 30 * program::kMillisecond;
+constexpr int32_t kLayerBias = 3;
 
 uint64_t nextVersion(program::Time now) {
   return uint64_t(now / kVersionPeriod) + 1;
@@ -57,14 +59,60 @@ TargetShape::TargetShape(const std::vector<Cell>& cells) {
 
 void ReconfigureProgram::onStart(program::ModuleContext& context) {
   distances_.fill(kUnknown);
-  settled_ = target_->contains(context.cell());
+  // A module on a target cell stays if its cell could be filled now, in the order of filling;
+  // one that sits there out of order would wall in the cells to fill before it: it moves on,
+  // and its cell is filled again in its turn.
+  settled_ = isOpen(context, context.cell());
   // Every module starts with the first version at once: no flood is needed for it.
   adopt(context, 0);
   seedOpenCells(context);
-  if (settled_) return;
+  if (settled_) return repairPocket(context);
   context.setColor(kMoving);
   phase_ = Phase::kWaiting;
   context.setTimer(context.random().between(100, 600) * program::kMillisecond, kStep);
+}
+
+// ---- Pockets ------------------------------------------------------------------------------
+
+namespace {
+constexpr std::array<int, 4> kSameLayer = {0, 1, 6, 7};
+// How many times a module that left its cell for a pocket tries to fill it before it stays.
+constexpr int kPocketAttempts = 4;
+}  // namespace
+
+void ReconfigureProgram::repairPocket(program::ModuleContext& context) {
+  // A pocket: an open target cell next to this one whose neighbours on its layer are all
+  // occupied. No mover can come into it (docs/reconfiguration.md); a module around it moves in
+  // and leaves its own cell empty instead: one with an empty cell beside itself leaves a hole
+  // that movers reach; one farther out than the pocket, in the layer's order, leaves a pocket one
+  // step nearer the edge, for the next one out to fill. The hole walks out and never back.
+  bool exit = false;
+  for (const int side : kSameLayer) {
+    const Cell next = context.cell() + geometry::neighbourOffset(side);
+    if (!context.occupied(next).value_or(true)) exit = true;
+  }
+  const double rank = target_->rank(context.cell());
+  for (const int side : kSameLayer) {
+    const Cell pocket = context.cell() + geometry::neighbourOffset(side);
+    if (!isOpen(context, pocket) || (!exit && target_->rank(pocket) >= rank)) continue;
+    bool enclosed = true;
+    for (const int around : kSameLayer) {
+      const Cell wall = pocket + geometry::neighbourOffset(around);
+      if (wall != context.cell() && !context.occupied(wall).value_or(false)) enclosed = false;
+    }
+    if (!enclosed) continue;
+    for (const motion::Evaluation& evaluation : context.motions()) {
+      const auto* motion = std::get_if<motion::Motion>(&evaluation);
+      if (!motion || motion->goal != pocket) continue;
+      settled_ = false;
+      leavingFor_ = pocket;
+      pocketAttempts_ = 0;
+      context.setColor(kMoving);
+      phase_ = Phase::kWaiting;
+      context.setTimer(context.random().between(100, 600) * program::kMillisecond, kStep);
+      return;
+    }
+  }
 }
 
 // ---- The gradient ---------------------------------------------------------------------------
@@ -72,8 +120,8 @@ void ReconfigureProgram::onStart(program::ModuleContext& context) {
 bool ReconfigureProgram::isOpen(program::ModuleContext& context, const Cell& cell) const {
   if (!target_->contains(cell)) return false;
   if (cell != context.cell() && context.occupied(cell).value_or(true)) return false;
-  // From the bottom up, on support.
-  bool supported = false;
+  // From the bottom up, on support: a module under it, or the ground (layer 0).
+  bool supported = cell.z == 0;
   for (int below = 8; below < 12; ++below) {
     const Cell under = cell + geometry::neighbourOffset(below);
     const bool filled = context.occupied(under).value_or(false);
@@ -106,11 +154,15 @@ void ReconfigureProgram::adopt(program::ModuleContext& context, uint64_t version
     }
   }
   seedOpenCells(context);
+  if (settled_) repairPocket(context);
 }
 
 void ReconfigureProgram::seedOpenCells(program::ModuleContext& context) {
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
-    if (isOpen(context, context.cell() + geometry::neighbourOffset(d))) learn(context, d, 0);
+    const Cell cell = context.cell() + geometry::neighbourOffset(d);
+    // An open cell one layer up looks kLayerBias motions farther: movers finish the lower layers
+    // first, whose last cells are otherwise left to movers that must climb down to them.
+    if (isOpen(context, cell)) learn(context, d, kLayerBias * std::max(0, cell.z));
   }
 }
 
@@ -187,6 +239,19 @@ void ReconfigureProgram::onMessage(program::ModuleContext& context, int ownConne
     if (!replied.ok()) ++lostReplies_;
     return;
   }
+  if (message.as<SettledQuery>()) {
+    // The asker may have let go of the latch meanwhile; its watchdog copes with a lost reply.
+    if (!context.send(ownConnector, Message::of(SettledReply{settled_})).ok()) ++lostReplies_;
+    return;
+  }
+  if (const auto* reply = message.as<SettledReply>()) {
+    if (phase_ != Phase::kConfirming) return;
+    if (!reply->settled) unsettledAround_ = true;
+    if (--waitingReplies_ > 0) return;
+    // A cell on the way of a passing mover is not yet this one's to fill: go on as a mover.
+    if (unsettledAround_) return retryLater(context);
+    return settle(context);
+  }
   if (const auto* reply = message.as<GoalReply>()) {
     if (phase_ != Phase::kAsking || reply->candidate < 0 ||
         reply->candidate >= int32_t(candidates_.size())) {
@@ -223,14 +288,17 @@ void ReconfigureProgram::onMessage(program::ModuleContext& context, int ownConne
       if (refusedByHelper_) {
         attemptFailed();
         retryAfterRelease_ = true;
-        return releaseHelpers(context, false);
+        return releaseHelpers(context);
       }
       phase_ = Phase::kMoving;
       const program::MoveResult moved = context.move(*chosen_);
       if (!moved.ok()) {
         attemptFailed();
         retryAfterRelease_ = true;
-        releaseHelpers(context, false);
+        releaseHelpers(context);
+      } else if (moved.state() == program::MoveResult::State::kQueued) {
+        // Waiting for its turn may outlast the helpers' leases: renewed while it waits.
+        context.setTimer(kLeaseTime / 2, kRenew);
       }
     };
   };
@@ -241,6 +309,7 @@ void ReconfigureProgram::onMessage(program::ModuleContext& context, int ownConne
   }
   if (routed(message.as<DeformMsg>(), [&](const RoutedMsg& r) { onDeformRequest(context, r); }) ||
       routed(message.as<ReleaseMsg>(), [&](const RoutedMsg& r) { onReleaseRequest(context, r); }) ||
+      routed(message.as<RenewMsg>(), [&](const RoutedMsg& r) { renew(context, r); }) ||
       routed(message.as<AckDeform>(), answerTo(true)) ||
       routed(message.as<NackDeform>(), answerTo(false))) {
     return;
@@ -263,6 +332,12 @@ void ReconfigureProgram::onTimer(program::ModuleContext& context, int tag) {
         spread(context, context.cell() + geometry::neighbourOffset(d), distances_[d]);
       }
     }
+    return;
+  }
+  if (tag == kRenew) {
+    if (phase_ != Phase::kMoving || !chosen_) return;
+    sendToHelpers<RenewMsg>(context, true);
+    context.setTimer(kLeaseTime / 2, kRenew);
     return;
   }
   if (tag == kLease) {
@@ -300,12 +375,15 @@ void ReconfigureProgram::onWatchdog(program::ModuleContext& context, uint32_t ro
   if (phase_ == Phase::kAsking) {
     waitingReplies_ = 0;
     choose(context);
+  } else if (phase_ == Phase::kConfirming) {
+    waitingReplies_ = 0;
+    retryLater(context);
   } else if (phase_ == Phase::kDeforming) {
     refusedByHelper_ = true;
     waitingAnswers_ = 0;
     attemptFailed();
     retryAfterRelease_ = true;
-    releaseHelpers(context, false);
+    releaseHelpers(context);
   } else if (phase_ == Phase::kReleasing) {
     waitingAnswers_ = 0;
     afterRelease(context);
@@ -316,7 +394,8 @@ void ReconfigureProgram::step(program::ModuleContext& context) {
   if (settled_) return;
   // A module that holds a piston for another's motion waits for it to be done.
   if (heldAxis_ >= 0 || compressing_ || releasing_) return retryLater(context);
-  if (isOpen(context, context.cell())) return settle(context);
+  if (leavingFor_) return stepIntoPocket(context);
+  if (isOpen(context, context.cell())) return confirm(context);
   candidates_.clear();
   for (motion::Evaluation& evaluation : context.motions()) {
     if (auto* motion = std::get_if<motion::Motion>(&evaluation)) {
@@ -341,6 +420,31 @@ void ReconfigureProgram::step(program::ModuleContext& context) {
     return retryLater(context);
   }
   watch(context);
+}
+
+void ReconfigureProgram::stepIntoPocket(program::ModuleContext& context) {
+  const Cell pocket = *leavingFor_;
+  candidates_.clear();
+  if (pocketAttempts_++ < kPocketAttempts && isOpen(context, pocket)) {
+    for (motion::Evaluation& evaluation : context.motions()) {
+      auto* motion = std::get_if<motion::Motion>(&evaluation);
+      if (motion && motion->goal == pocket) {
+        candidates_.push_back(std::move(*motion));
+        break;
+      }
+    }
+  }
+  if (candidates_.empty()) {
+    // Filled by another, or out of reach after all: this module stays where it is.
+    leavingFor_.reset();
+    return confirm(context);
+  }
+  // The one motion, as if its pivot had told distance 0 of the newest version.
+  candidateDistances_.assign(1, 0);
+  candidateVersions_.assign(1, version_);
+  candidateSettled_.assign(1, true);
+  standing_ = kUnknown;
+  choose(context);
 }
 
 void ReconfigureProgram::attemptFailed() {
@@ -438,8 +542,7 @@ void ReconfigureProgram::retryLater(program::ModuleContext& context) {
   context.setTimer(context.random().between(200, 1200) * program::kMillisecond, kStep);
 }
 
-void ReconfigureProgram::releaseHelpers(program::ModuleContext& context, bool thenSettle) {
-  settleAfterRelease_ = thenSettle;
+void ReconfigureProgram::releaseHelpers(program::ModuleContext& context) {
   // Every helper asked this round, not only those heard from: an answer may have been lost on its
   // way back (a helper whose piston retracts the connector that faced the mover), and a release
   // for a request never granted is answered and ignored.
@@ -456,8 +559,7 @@ void ReconfigureProgram::afterRelease(program::ModuleContext& context) {
   requests_.clear();
   chosen_.reset();
   phase_ = Phase::kWaiting;
-  if (settleAfterRelease_) return settle(context);
-  if (isOpen(context, context.cell())) return settle(context);
+  if (isOpen(context, context.cell())) return confirm(context);
   // After a motion, go on at once; after a refusal, wait first.
   if (retryAfterRelease_) {
     retryAfterRelease_ = false;
@@ -468,19 +570,56 @@ void ReconfigureProgram::afterRelease(program::ModuleContext& context) {
 
 void ReconfigureProgram::onMotionDone(program::ModuleContext& context) {
   ++motions_;
+  leavingFor_.reset();
   failedGoals_.clear();
   standing_ = chosenDistance_;
   standingVersion_ = chosenVersion_;
   idleRounds_ = 0;
   retryAfterRelease_ = false;
-  releaseHelpers(context, false);
+  releaseHelpers(context);
 }
 
 void ReconfigureProgram::onMotionRefused(program::ModuleContext& context,
                                          const program::MoveRefusal&) {
   attemptFailed();
   retryAfterRelease_ = true;
-  releaseHelpers(context, false);
+  releaseHelpers(context);
+}
+
+void ReconfigureProgram::confirm(program::ModuleContext& context) {
+  // The cells that must be filled before this one: a mover passing through one of them looks
+  // the same as a module that stays, to the senses; only it can say which it is.
+  uint16_t ask = 0;
+  const double rank = target_->rank(context.cell());
+  for (int d = 0; d < geometry::kDirectionCount; ++d) {
+    const Cell next = context.cell() + geometry::neighbourOffset(d);
+    if (!target_->contains(next)) continue;
+    const bool below = d >= 8;
+    const bool inward = (d == 0 || d == 1 || d == 6 || d == 7) && target_->rank(next) < rank;
+    if (below || inward) ask |= uint16_t(1u << d);
+  }
+  waitingReplies_ = 0;
+  unsettledAround_ = false;
+  const uint16_t latched = context.latchedConnectors();
+  std::vector<int> connectors;
+  for (int d = 0; d < geometry::kDirectionCount; ++d) {
+    if (!(ask & (1u << d))) continue;
+    const Cell next = context.cell() + geometry::neighbourOffset(d);
+    int connector = -1;
+    for (int k = 0; k < geometry::kDirectionCount; ++k) {
+      if ((latched & (1u << k)) && context.cellBehind(k) == next) connector = k;
+    }
+    // Not latched to it now (a piston in motion): ask again later.
+    if (connector < 0) return retryLater(context);
+    connectors.push_back(connector);
+  }
+  if (connectors.empty()) return settle(context);
+  phase_ = Phase::kConfirming;
+  for (const int connector : connectors) {
+    if (context.send(connector, Message::of(SettledQuery{})).ok()) ++waitingReplies_;
+  }
+  if (waitingReplies_ == 0) return retryLater(context);
+  watch(context);
 }
 
 void ReconfigureProgram::settle(program::ModuleContext& context) {
@@ -499,8 +638,11 @@ void ReconfigureProgram::settle(program::ModuleContext& context) {
 
 void ReconfigureProgram::onDeformRequest(program::ModuleContext& context,
                                          const RoutedMsg& request) {
+  // A piston on its way back is asked again once at rest: the mover that just passed often
+  // needs it for its next motion too, and a refusal would send it another way.
+  if (releasing_) return waitingForRest_.push_back(request);
   // A mover busy with its own motion makes way for nobody.
-  const bool busy = phase_ == Phase::kDeforming || phase_ == Phase::kMoving || releasing_;
+  const bool busy = phase_ == Phase::kDeforming || phase_ == Phase::kMoving;
   if (busy || (heldAxis_ >= 0 && heldAxis_ != request.axis)) return answer(context, request, false);
   if (heldAxis_ == request.axis) {
     grant(context, request);
@@ -523,6 +665,12 @@ void ReconfigureProgram::grant(program::ModuleContext& context, const RoutedMsg&
   if (grants_.empty()) context.setTimer(kLeaseTime, kLease);
   grants_.push_back({request.request, context.now() + kLeaseTime});
   ++holders_;
+}
+
+void ReconfigureProgram::renew(program::ModuleContext& context, const RoutedMsg& request) {
+  for (Grant& grant : grants_) {
+    if (grant.request == request.request) grant.until = context.now() + kLeaseTime;
+  }
 }
 
 void ReconfigureProgram::onReleaseRequest(program::ModuleContext& context,
@@ -559,6 +707,9 @@ void ReconfigureProgram::onDeformationDone(program::ModuleContext& context) {
   if (releasing_) {
     releasing_ = false;
     heldAxis_ = -1;
+    std::vector<RoutedMsg> waiting;
+    waiting.swap(waitingForRest_);
+    for (const RoutedMsg& request : waiting) onDeformRequest(context, request);
   }
 }
 
@@ -586,6 +737,8 @@ std::string ReconfigureProgram::describeState() const {
       return fmt::format("waiting to try again ({} motions, {} refusals)", motions_, refusals_);
     case Phase::kAsking:
       return fmt::format("waiting for {} distances", waitingReplies_);
+    case Phase::kConfirming:
+      return fmt::format("asking {} neighbours whether they stay", waitingReplies_);
     case Phase::kDeforming:
       return fmt::format("waiting for {} helpers to compress", waitingAnswers_);
     case Phase::kMoving:

@@ -3,24 +3,30 @@
 //
 // Every module knows the target's cells (its description, as in VisibleSim's reconfiguration
 // programs) and senses the cells two steps around it; it knows nothing else of the ensemble but
-// what messages tell it. A module on a target cell stays. The others, the movers, walk the surface
-// down a distance gradient towards the open target cells and fill them:
-//   - A target cell is open when it is empty, some module lies under it, and every target cell
-//     under it is filled: the shape grows from the bottom up, always on support.
+// what messages tell it. A module on a target cell that could be filled now stays; the others,
+// the movers, walk the surface down a distance gradient towards the open target cells and fill
+// them:
+//   - A target cell is open when it is empty, on support (a module under it, or the ground),
+//     every target cell under it is filled, and so is every target cell next to it on its layer
+//     that lies nearer the layer's centre: the shape grows from the bottom up and each layer from
+//     the inside out, so that its open cells lie on the edge of what is filled.
 //   - The gradient is the paper's distributed gradient (gradient.h) with many goals: the modules
-//     around each open cell give it distance 0, and distances spread as in the paper. A module
-//     that fills a cell starts a new version of the gradient: the version floods the ensemble, and
-//     every module forgets the old distances and seeds the open cells it senses now. Versions are
-//     ordered (count, then the id of the module that started it), so concurrent fills settle on
-//     one.
+//     around each open cell seed it (a cell one layer up looks a few motions farther, so that
+//     lower layers finish first) and distances spread as in the paper. Fills start a new version
+//     of the gradient at the next period of simulated time; a version floods the ensemble, and
+//     every module forgets the old distances and seeds the open cells it senses now.
 //   - A mover asks the pivots of its valid motions for the distance of each goal, takes the
-//     smallest of the newest version, asks the modules of its deformation list to compress (they
-//     may refuse: busy with another piston, in a motion of their own, or the engine refuses),
-//     moves, and lets them go. It settles on an open target cell. Any refusal, of a helper or of
-//     the engine (a reservation, connectivity), makes it let go of its helpers and try again after
-//     a random wait, from its own random stream.
+//     smallest of the newest version (a settled pivot first), asks the modules of its deformation
+//     list to compress (they may refuse: busy with another piston, in a motion of their own, or
+//     the engine refuses), moves, and lets them go. Any refusal, of a helper or of the engine (a
+//     reservation, connectivity), makes it let go of its helpers and try again after a random
+//     wait, from its own random stream; a goal that failed weighs more the next time.
+//   - On an open cell, a mover asks the modules of the cells to fill before it whether they stay
+//     (a mover passing through looks the same to the senses), and settles when they all do.
 //   - A module asked to compress for several motions with the same piston holds it until the last
-//     lets go.
+//     lets go, or its lease lapses.
+//   - A pocket (an open cell walled in on its layer, which no mover can enter) is filled by a
+//     settled module next to it, which leaves a hole that movers reach.
 #pragma once
 
 #include <climits>
@@ -95,6 +101,21 @@ struct GoalReply {
   bool pivotSettled;  // a pivot that will still be there
 };
 
+// A mover about to fill a cell asks the modules in the cells that must be filled first whether
+// they stay there.
+struct SettledQuery {
+  static constexpr std::string_view kName = "SettledQuery";
+};
+struct SettledReply {
+  static constexpr std::string_view kName = "SettledReply";
+  bool settled;
+};
+
+// A mover whose motion waits in the run's queue keeps its helpers' grants alive.
+struct RenewMsg : RoutedMsg {
+  static constexpr std::string_view kName = "RenewMsg";
+};
+
 // A module asked to compress cannot (busy, or refused by the engine).
 struct NackDeform : RoutedMsg {
   static constexpr std::string_view kName = "NackDeform";
@@ -124,7 +145,7 @@ class ReconfigureProgram : public program::ModuleProgram {
   const std::optional<std::string>& failure() const { return failure_; }
 
  private:
-  enum class Phase { kIdle, kWaiting, kAsking, kDeforming, kMoving, kReleasing };
+  enum class Phase { kIdle, kWaiting, kAsking, kConfirming, kDeforming, kMoving, kReleasing };
 
   // The gradient.
   void adopt(program::ModuleContext& context, uint64_t version);
@@ -135,6 +156,10 @@ class ReconfigureProgram : public program::ModuleProgram {
   // some module under it, every target cell under it filled, and every target cell of its layer
   // next to it and nearer the layer's centre filled.
   bool isOpen(program::ModuleContext& context, const geometry::Cell& cell) const;
+
+  // A settled module next to a pocket that it can fill leaves its cell for it.
+  void repairPocket(program::ModuleContext& context);
+  void stepIntoPocket(program::ModuleContext& context);
 
   // The mover.
   void watch(program::ModuleContext& context);
@@ -147,8 +172,10 @@ class ReconfigureProgram : public program::ModuleProgram {
   void attemptFailed();
   // A candidate's distance with the failures at its goal counted against it.
   int64_t effective(int candidate) const;
-  void releaseHelpers(program::ModuleContext& context, bool thenSettle);
+  void releaseHelpers(program::ModuleContext& context);
   void afterRelease(program::ModuleContext& context);
+  // On an open cell: settles once the modules of the cells to be filled before it say they stay.
+  void confirm(program::ModuleContext& context);
   void settle(program::ModuleContext& context);
   template <typename T>
   void sendToHelpers(program::ModuleContext& context, bool releasing);
@@ -156,6 +183,7 @@ class ReconfigureProgram : public program::ModuleProgram {
   // A helper's side.
   void onDeformRequest(program::ModuleContext& context, const RoutedMsg& request);
   void onReleaseRequest(program::ModuleContext& context, const RoutedMsg& request);
+  void renew(program::ModuleContext& context, const RoutedMsg& request);
   void answer(program::ModuleContext& context, const RoutedMsg& request, bool granted);
   void grant(program::ModuleContext& context, const RoutedMsg& request);
   void note(const Status& status);
@@ -187,7 +215,7 @@ class ReconfigureProgram : public program::ModuleProgram {
   int waitingAnswers_ = 0;
   bool refusedByHelper_ = false;
   bool retryAfterRelease_ = false;
-  bool settleAfterRelease_ = false;
+  bool unsettledAround_ = false;  // a confirmation heard of a mover in a cell to fill first
   int motions_ = 0;
   int refusals_ = 0;
   int idleRounds_ = 0;
@@ -197,6 +225,8 @@ class ReconfigureProgram : public program::ModuleProgram {
   uint64_t standingVersion_ = 0;
   int roundsWithoutDescent_ = 0;
   std::vector<std::pair<geometry::Cell, int>> failedGoals_;
+  std::optional<geometry::Cell> leavingFor_;  // the pocket this module left its cell to fill
+  int pocketAttempts_ = 0;
   uint32_t round_ = 0;
   int lostReplies_ = 0;  // replies to movers that had moved on
 
@@ -212,7 +242,7 @@ class ReconfigureProgram : public program::ModuleProgram {
   bool compressing_ = false;
   bool releasing_ = false;
   std::vector<RoutedMsg> waitingForPiston_;
-  std::vector<RoutedMsg> waitingForRest_;
+  std::vector<RoutedMsg> waitingForRest_;  // asked while its piston was on its way back
   std::optional<std::string> failure_;
 };
 

@@ -52,6 +52,18 @@ std::vector<Cell> unreachable(const world::World& world, const motion::RuleTable
 
 }  // namespace
 
+ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int maxMotions) {
+  const program::Time share =
+      maxMotions > 0
+          ? std::max<program::Time>(1, (program::Time(movers) + maxMotions - 1) / maxMotions)
+          : 1;
+  limits.stall *= share;
+  if (limits.timeout == 0) {
+    limits.timeout = (3600 + 10 * program::Time(modules)) * program::kSecond * share;
+  }
+  return limits;
+}
+
 ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& table,
                             const std::vector<Cell>& target, const algorithms::ProgramSet& programs,
                             const ReshapeLimits& limits) {

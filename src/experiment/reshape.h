@@ -23,9 +23,15 @@ struct ReshapeLimits {
   program::Time slice = 5 * program::kSecond;
   // No new cell filled for this long: a deadlock.
   program::Time stall = 600 * program::kSecond;
-  // The whole run.
-  program::Time timeout = 3600 * program::kSecond;
+  // The whole run; 0: 3600 s and 10 s more per module.
+  program::Time timeout = 0;
 };
+
+// The limits of a run whose motions wait in a queue of `maxMotions` (0: no limit) shared by
+// `movers` modules: each mover then moves about once per ceil(movers / maxMotions) motion times,
+// so the stall and the default timeout stretch as much, and the sequential baseline is judged
+// by the same measure as the parallel run.
+ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int maxMotions);
 
 struct ReshapeOutcome {
   bool success = false;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "algorithms/follow_gradient.h"
 #include "algorithms/registry.h"
 #include "record/trace_writer.h"
@@ -64,6 +66,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   }
 
   std::shared_ptr<const algorithms::TargetShape> shape;
+  ReshapeLimits limits = request.reshape;
   if (info->reshapes) {
     if (request.targets.empty()) {
       return Error{std::string(info->name) +
@@ -82,6 +85,10 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
       }
     }
     shape = std::make_shared<algorithms::TargetShape>(target);
+    const auto movers = size_t(
+        std::count_if(world.modules().begin(), world.modules().end(),
+                      [&](const world::Module& module) { return !shape->contains(module.cell); }));
+    limits = limitsFor(limits, world.size(), movers, request.simulation.maxMotions);
   }
 
   // The gradient's programs have a goal and a mobile; the others run on the scene as it is.
@@ -116,8 +123,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   if (info->reshapes) {
     // Watched slice by slice until the target is built or the run stops; a stopped run is a
     // result too.
-    result.reshape =
-        watchReshape(simulator, table, request.targets.front(), **programs, request.reshape);
+    result.reshape = watchReshape(simulator, table, request.targets.front(), **programs, limits);
   } else {
     // The gradient settles first; then, where the mobile walks, it is triggered.
     simulator.startAll();

@@ -175,22 +175,27 @@ Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t se
   return reshape;
 }
 
-Result<ReshapeCase> cornerToPyramid(int side) {
+Result<ReshapeCase> cornerToPyramid(int side, int base) {
   if (side < 8) return Error{"a floor for a pyramid is at least 8 by 8"};
-  const int base = side / 8;
+  if (base == 0) base = side / 8;
+  if (base < 1) return Error{"the pyramid's base is at least 1 (" + std::to_string(base) + ")"};
   int pyramid = 0;
   for (int layer = base; layer >= 1; --layer) pyramid += layer * layer;
+  const int width = int(std::ceil(std::sqrt(double(pyramid))));
+  const int origin = side / 2 - base / 2;
+  if (width > origin) {
+    return Error{"a pyramid of base " + std::to_string(base) + " needs a floor wider than " +
+                 std::to_string(side) + ": its modules' corner block would reach it"};
+  }
   auto floor = floorWorld(side, side);
   if (!floor.ok()) return Error{floor.error()};
   ReshapeCase reshape{std::move(*floor), floorCells(side, side), {}};
   // The block in the corner: rows as wide as its square root.
-  const int width = int(std::ceil(std::sqrt(double(pyramid))));
   for (int placed = 0; placed < pyramid; ++placed) {
     const Status added = addModule(reshape.world, {placed % width, placed / width, 1});
     if (!added.ok()) return Error{added.error()};
   }
   // The pyramid in the middle: layer z is a square of base - z + 1 cells a side.
-  const int origin = side / 2 - base / 2;
   for (int z = 1; z <= base; ++z) {
     for (int y = 0; y <= base - z; ++y) {
       for (int x = 0; x <= base - z; ++x) reshape.target.push_back({origin + x, origin + y, z});

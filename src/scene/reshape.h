@@ -37,8 +37,9 @@ Result<world::World> heapOnFloor(int floorX, int floorY, int count);
 Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t seed);
 
 // A side x side floor whose corner holds a flat block of modules, into a pyramid in the floor's
-// middle with as many modules: layers of squares a^2, (a-1)^2, ... 1, for the largest base `a`
-// whose pyramid fits in the floor; the block holds exactly as many modules as the pyramid.
-Result<ReshapeCase> cornerToPyramid(int side);
+// middle with as many modules: layers of squares a^2, (a-1)^2, ... 1 for the base a (side / 8
+// when `base` is 0); the block holds exactly as many modules as the pyramid, and must not reach
+// the pyramid's cells.
+Result<ReshapeCase> cornerToPyramid(int side, int base = 0);
 
 }  // namespace datomsim::scene

@@ -12,7 +12,8 @@ std::vector<uint32_t> cutOffPiece(const World& world, std::span<const BrokenLatc
       [&](uint32_t index, int connector) {
         const Module& module = modules[index];
         const Module* other = world.neighbour(module, module.orientation.worldDirection(connector));
-        return other ? *world.indexOf(other->id) : kNoModule;
+        // Modules sit in one array: the index is the offset, without a lookup by id.
+        return other ? uint32_t(other - modules.data()) : kNoModule;
       },
       [&](uint32_t index) { return modules[index].latches; },
       [&](uint32_t index) { return excluded && modules[index].id == *excluded; });

@@ -34,6 +34,41 @@ struct BrokenLatch {
 // Module indices, or none.
 inline constexpr uint32_t kNoModule = UINT32_MAX;
 
+// Which search reached each module. Searches usually meet within a few dozen modules, where a
+// flat list beats a hash table (no allocation per entry, no hashing); past that, a hash table.
+class SearchOwners {
+ public:
+  // The owner recorded for `module`, and whether this call recorded it.
+  std::pair<size_t*, bool> emplace(uint32_t module, size_t search) {
+    if (map_.empty()) {
+      for (auto& [m, s] : flat_) {
+        if (m == module) return {&s, false};
+      }
+      if (flat_.size() < kFlatLimit) {
+        if (flat_.empty()) flat_.reserve(kFlatLimit);
+        flat_.push_back({module, search});
+        return {&flat_.back().second, true};
+      }
+      map_.insert(flat_.begin(), flat_.end());
+      flat_.clear();
+    }
+    const auto [it, fresh] = map_.emplace(module, search);
+    return {&it->second, fresh};
+  }
+  size_t at(uint32_t module) const {
+    if (!map_.empty()) return map_.at(module);
+    for (const auto& [m, s] : flat_) {
+      if (m == module) return s;
+    }
+    return map_.at(module);  // throws: every end was recorded first
+  }
+
+ private:
+  static constexpr size_t kFlatLimit = 64;
+  std::vector<std::pair<uint32_t, size_t>> flat_;
+  std::unordered_map<uint32_t, size_t> map_;
+};
+
 // `Behind(module, connector)`: the index of the module latched to a module's own latched
 // connector, or kNoModule; `Latches(module)`: the module's latch bits; `Excluded(module)`: true for
 // modules that take no part (e.g. an imagined mobile's module). Returns the modules of a piece
@@ -65,7 +100,7 @@ std::vector<uint32_t> cutOffPiece(std::span<const BrokenLatch> broken, Behind&& 
     while (root[s] != s) s = root[s] = root[root[s]];
     return s;
   };
-  std::unordered_map<uint32_t, size_t> searchOf;  // module -> the search that reached it first
+  SearchOwners searchOf;  // module -> the search that reached it first
   std::vector<std::vector<uint32_t>> reached(count);
   std::vector<size_t> next(count, 0);  // the next reached module each search expands
   for (size_t s = 0; s < count; ++s) {
@@ -105,11 +140,11 @@ std::vector<uint32_t> cutOffPiece(std::span<const BrokenLatch> broken, Behind&& 
         if (!(bits & (1u << connector)) || isBroken(module, connector)) continue;
         const uint32_t other = behind(module, connector);
         if (other == kNoModule || excluded(other)) continue;
-        const auto [it, fresh] = searchOf.emplace(other, s);
+        const auto [owner, fresh] = searchOf.emplace(other, s);
         if (fresh) {
           reached[s].push_back(other);
-        } else if (find(it->second) != find(s)) {
-          root[find(it->second)] = find(s);
+        } else if (find(*owner) != find(s)) {
+          root[find(*owner)] = find(s);
           if (allPairsJoined()) return {};
         }
       }

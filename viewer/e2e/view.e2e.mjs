@@ -14,6 +14,8 @@
 // maximum is the run's max_concurrent_motions, at a time of many motions in flight as many module
 // bodies are away from their cells, playing to a time and seeking to it give the same picture.
 // On the same run with target shapes added to its header: the target cells are drawn and counted.
+// On the demo's self-reconfiguration (the arch built from a layer on its box): the target is
+// partly filled at the start and filled at the end, and its busiest time shows that many motions.
 // Screenshots go to DIR (default /tmp/viewer-shots). Ends with "N passed, M failed".
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -91,6 +93,12 @@ function makePages(scratch) {
     view(join(demo, `${name}-trace.jsonl`), '--reach', reach, '-o', file);
     pages.push({ name, file, run: true, overlay: true });
   }
+  // The demo's self-reconfiguration: the arch built from a layer of modules on its box.
+  const buildFile = join(scratch, 'arch-build.html');
+  view(join(demo, 'arch-build-trace.jsonl'), '-o', buildFile);
+  const buildRun = JSON.parse(readFileSync(join(demo, 'arch-build-run.json'), 'utf8'));
+  pages.push({ name: 'arch-build', file: buildFile, reshape: buildRun });
+
   const sceneFile = join(scratch, 'scene-hole1.html');
   view(join(repository, 'scenes', 'paper-arch-hole1.json'), '-o', sceneFile);
   pages.push({ name: 'scene-hole1', file: sceneFile, run: false, overlay: false });
@@ -320,6 +328,7 @@ async function testPage(context, spec) {
 
   if (spec.walkers) await testWalkers(page, spec);
   if (spec.targets) await testTargets(page, spec);
+  if (spec.reshape) await testReshape(page, spec);
 
   await check(`${name}: no console error and no request leaves the file`, async () => {
     assert(errors.length === 0, `console errors: ${errors.join(' | ')}`);
@@ -427,6 +436,43 @@ async function testWalkers(page, spec) {
 }
 
 // The walkers' run with two target shapes in its header.
+// A reconfiguration's page: the target filling up, several modules moving at once.
+async function testReshape(page, spec) {
+  const name = spec.name;
+  const api = 'window.datomsimViewer';
+  const run = spec.reshape;
+  const duration = await page.evaluate(`${api}.duration`);
+  const cells = run.final.length;
+
+  await check(`${name}: the target is partly filled at the start and filled at the end`, async () => {
+    assert(run.success === true && run.missing.length === 0, `the demo's run did not build the arch: ${run.reason}`);
+    await page.evaluate(`${api}.seek(0)`);
+    const start = await page.evaluate(`${api}.targets()`);
+    assert(start.cells === cells, `the target has ${start.cells} cells, the run ${cells}`);
+    assert(start.filled < cells, `${start.filled} of ${cells} filled at the start`);
+    await shoot(page, `${name}-start`);
+    await page.evaluate(`${api}.seek(${duration})`);
+    const end = await page.evaluate(`${api}.targets()`);
+    assert(end.filled === cells, `${end.filled} of ${cells} filled at the end`);
+    assert(end.legend === `target: ${cells} cells, ${cells} filled`, `legend ${end.legend}`);
+    await shoot(page, `${name}-end`);
+  });
+
+  await check(`${name}: in the middle, the run's most motions at once, as many modules mid-motion`, async () => {
+    const concurrency = await page.evaluate(`${api}.concurrency()`);
+    assert(concurrency.max === run.max_concurrent_motions && concurrency.max >= 4, `strip max ${concurrency.max}, run ${run.max_concurrent_motions}`);
+    const { from, to } = concurrency.maxAt[0];
+    await page.evaluate(`${api}.seek(${(from + to) / 2})`);
+    const inFlight = await page.evaluate(`${api}.motionsInFlight()`);
+    const away = await awayFromCells(page);
+    assert(inFlight.length === concurrency.max, `${inFlight.length} motions in flight`);
+    assert(away.length === inFlight.length, `${away.length} module bodies away from their cells`);
+    const middle = await page.evaluate(`${api}.targets()`);
+    assert(middle.filled > 0 && middle.filled < cells, `${middle.filled} of ${cells} filled`);
+    await shoot(page, `${name}-middle`);
+  });
+}
+
 async function testTargets(page, spec) {
   const name = spec.name;
   const api = 'window.datomsimViewer';

@@ -30,13 +30,15 @@ done
 for flavour in release sanitize; do
   "build/$flavour/bin/datomsim" run scenes/walkers.json --program walkers --seed 5 \
     --trace "$scratch/$flavour-walkers.jsonl" --out "$scratch/$flavour-walkers.json"
+  "build/$flavour/bin/datomsim" run scenes/reshape-heap.json --program reconfigure --seed 7 \
+    --trace "$scratch/$flavour-heap.jsonl" --out "$scratch/$flavour-heap.json"
 done
-cmp "$scratch/release.jsonl" "$scratch/sanitize.jsonl"
-cmp "$scratch/release.json" "$scratch/sanitize.json"
-cmp "$scratch/release-walkers.jsonl" "$scratch/sanitize-walkers.jsonl"
-cmp "$scratch/release-walkers.json" "$scratch/sanitize-walkers.json"
-echo "traces identical ($(wc -l < "$scratch/release.jsonl") and" \
-  "$(wc -l < "$scratch/release-walkers.jsonl") lines)"
+for run in "" -walkers -heap; do
+  cmp "$scratch/release$run.jsonl" "$scratch/sanitize$run.jsonl"
+  cmp "$scratch/release$run.json" "$scratch/sanitize$run.json"
+done
+echo "traces identical ($(wc -l < "$scratch/release.jsonl"), " \
+  "$(wc -l < "$scratch/release-walkers.jsonl") and $(wc -l < "$scratch/release-heap.jsonl") lines)"
 
 echo "== benchmarks (smoke run)"
 scripts/bench.sh --smoke

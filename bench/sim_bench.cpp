@@ -68,7 +68,7 @@ void reshapePyramid(benchmark::State& state) {
     built = built && run.ok() && run->reshape && run->reshape->success;
     events += run->statistics.events();
     motions += run->statistics.motions;
-    makespan += double(run->statistics.lastMotionEnd) / program::kSecond;
+    makespan += double(run->statistics.lastMotionEnd) / kSecond;
   }
   const auto iterations = double(state.iterations());
   state.counters["modules"] = double(reshape.world.size());

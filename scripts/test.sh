@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds datomsim and runs every check: formatting, the unit and scenario tests (release build,
-# warnings as errors), the same tests under AddressSanitizer and UndefinedBehaviorSanitizer, a
+# warnings as errors), the examples/ built against the installed package, the same tests under AddressSanitizer and UndefinedBehaviorSanitizer, a
 # determinism check across optimisation levels, a smoke run of the benchmarks, and the viewer's
 # tests (unit, then end to end in headless Chromium; DATOMSIM_SKIP_BROWSER=1 skips them). Exits
 # non-zero on the first failure.
@@ -13,6 +13,9 @@ scripts/check-format.sh
 echo "== release build and tests"
 scripts/build.sh release
 ctest --test-dir build/release --output-on-failure -j "$(nproc)"
+
+echo "== examples: installed to a temporary prefix, built and run outside the tree"
+scripts/test-examples.sh
 
 echo "== sanitizer build and tests"
 scripts/build.sh sanitize

@@ -2,14 +2,18 @@
 // outputs whole or not at all.
 #pragma once
 
+#include <map>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "algorithms/registry.h"
 #include "arguments.h"
-#include "common/result.h"
+#include "datomsim/program.h"
+#include "datomsim/result.h"
 #include "experiment/run.h"
 #include "geometry/cell.h"
 #include "motion/reach.h"
@@ -22,7 +26,8 @@ void addSceneCommands(CLI::App& app);  // generate, convert, info
 // generate reshape CASE: the reconfiguration cases.
 void addReshapeGenerator(CLI::App& generate);
 void addMotionCommands(CLI::App& app);  // reach, moves, verify
-void addRunCommand(CLI::App& app);
+// `run`, with the programs a researcher's executable adds (they outlive the command line).
+void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added = {});
 void addDemoCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addMeshCommand(CLI::App& app);
@@ -42,7 +47,8 @@ T unwrap(Result<T>&& result) {
 void check(const Status& status);
 
 // The JSON result of `run` (see docs/file-formats.md).
-std::string runJson(const std::string& program, const experiment::RunResult& result);
+std::string runJson(const algorithms::ProgramInfo& program, const experiment::RunResult& result,
+                    const std::map<std::string, std::string>& parameters = {});
 
 // Writes text to a file atomically, or to standard output when the path is empty or "-".
 void writeOutput(const std::string& path, const std::string& text);

@@ -66,7 +66,7 @@ void addDemoCommand(CLI::App& app) {
                     (folder / (name + "-distances.svg")).string());
       writeOutput((folder / (name + "-trace.jsonl")).string(), result.run.trace);
       writeOutput((folder / (name + "-run.json")).string(),
-                  runJson(std::string(algorithms::kFollowGradient), result.run));
+                  runJson(*algorithms::programInfo(algorithms::kFollowGradient), result.run));
       if (bundle.ok()) {
         check(exporting::writeViewerPage(
             folder / (name + "-viewer.html"), *bundle,
@@ -86,7 +86,7 @@ void addDemoCommand(CLI::App& app) {
       entry["simulated_path_matches"] = result.run.path == result.path;
       entry["events"] = result.run.statistics.events();
       entry["messages"] = result.run.statistics.messages();
-      entry["sim_time_s"] = double(result.run.statistics.simulatedTime) / program::kSecond;
+      entry["sim_time_s"] = double(result.run.statistics.simulatedTime) / kSecond;
       scenes.push_back(std::move(entry));
     }
     summary["scenes"] = std::move(scenes);
@@ -109,13 +109,13 @@ void addDemoCommand(CLI::App& app) {
         unwrap(experiment::runProgram(std::move(build.world), table, request));
     writeOutput((folder / "arch-build-trace.jsonl").string(), built.trace);
     writeOutput((folder / "arch-build-run.json").string(),
-                runJson(std::string(algorithms::kReconfigure), built));
+                runJson(*algorithms::programInfo(algorithms::kReconfigure), built));
     if (bundle.ok()) {
       check(exporting::writeViewerPage(folder / "arch-build-viewer.html", *bundle,
                                        {request.description, built.trace, ""}));
     }
-    const double makespan = double(built.statistics.lastMotionEnd) / program::kSecond;
-    const double baseline = double(sequential.statistics.lastMotionEnd) / program::kSecond;
+    const double makespan = double(built.statistics.lastMotionEnd) / kSecond;
+    const double baseline = double(sequential.statistics.lastMotionEnd) / kSecond;
     nlohmann::ordered_json arch;
     arch["success"] = built.reshape->success;
     arch["motions"] = built.statistics.motions;

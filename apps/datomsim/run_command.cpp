@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "algorithms/registry.h"
@@ -13,12 +14,12 @@
 
 namespace datomsim::app {
 
-std::string runJson(const std::string& program, const experiment::RunResult& result) {
+std::string runJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
+                    const std::map<std::string, std::string>& parameters) {
   const sim::Statistics& statistics = result.statistics;
-  auto seconds = [](program::Time t) { return double(t) / program::kSecond; };
+  auto seconds = [](Time t) { return double(t) / kSecond; };
   nlohmann::ordered_json out;
-  out["program"] = program;
-  const algorithms::ProgramInfo info = *algorithms::programInfo(program);
+  out["program"] = info.name;
   auto cells = [](const std::vector<geometry::Cell>& list) {
     nlohmann::ordered_json array = nlohmann::ordered_json::array();
     for (const geometry::Cell& cell : list) array.push_back({cell.x, cell.y, cell.z});
@@ -30,6 +31,25 @@ std::string runJson(const std::string& program, const experiment::RunResult& res
     out["final"] = cells(result.reshape->final);
     out["missing"] = cells(result.reshape->missing);
     out["extra"] = cells(result.reshape->extra);
+  } else if (info.entry) {
+    // A public-API program: its parameters, then what its modules reported, key by key.
+    nlohmann::ordered_json given = nlohmann::ordered_json::object();
+    for (const auto& [name, value] : parameters) given[name] = value;
+    out["parameters"] = std::move(given);
+    out["stopped_at_limit"] = result.stoppedAtLimit;
+    for (const algorithms::ReportedValues& reported : result.reports) {
+      nlohmann::ordered_json values = nlohmann::ordered_json::array();
+      for (const auto& [cell, value] : reported.values) {
+        // Whole numbers print as integers ("hops": [[0,0,0,3], ...]).
+        const bool whole = value == double(int64_t(value)) && std::abs(value) < 9e15;
+        if (whole) {
+          values.push_back({cell.x, cell.y, cell.z, int64_t(value)});
+        } else {
+          values.push_back({cell.x, cell.y, cell.z, value});
+        }
+      }
+      out[reported.key] = std::move(values);
+    }
   } else if (!info.needsGoal) {
     nlohmann::ordered_json walkers = nlohmann::ordered_json::array();
     for (const algorithms::WalkerOutcome& walker : result.walkers) {
@@ -92,23 +112,23 @@ void printStatistics(const sim::Statistics& statistics) {
   }
   fmt::print(stderr, "motions     {} (at most {} at once, {:.2f} on average; makespan {:.3f} s)\n",
              statistics.motions, statistics.maxConcurrentMotions,
-             statistics.meanConcurrentMotions(),
-             double(statistics.lastMotionEnd) / program::kSecond);
+             statistics.meanConcurrentMotions(), double(statistics.lastMotionEnd) / kSecond);
   for (const auto& [reason, count] : statistics.refusalsByReason) {
     fmt::print(stderr, "  refused, {:<26}{}\n", reason, count);
   }
   fmt::print(stderr, "  waiting for reservations {:.3f} s\n",
-             double(statistics.reservationWait) / program::kSecond);
+             double(statistics.reservationWait) / kSecond);
   fmt::print(stderr, "deformations {}\nsimulated   {:.3f} s\n", statistics.deformations,
-             double(statistics.simulatedTime) / program::kSecond);
+             double(statistics.simulatedTime) / kSecond);
 }
 
 }  // namespace
 
-void addRunCommand(CLI::App& app) {
+void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
   struct Arguments {
-    std::string scene, program, goal, start, out, trace, target;
-    double timeoutS = 0;
+    std::string scene, program, goal, start, out, trace, target, root;
+    std::vector<std::string> parameters;
+    double timeoutS = 0, untilS = 0;
     bool stats = false;
     RuleArguments rules;
     uint64_t seed = 1;
@@ -121,7 +141,7 @@ void addRunCommand(CLI::App& app) {
   command->add_option("scene", args->scene, "Scene file (.xml or .json)")->required();
   std::vector<std::string> names;
   std::string summaries;
-  for (const algorithms::ProgramInfo& info : algorithms::programs()) {
+  for (const algorithms::ProgramInfo& info : algorithms::programs(added)) {
     names.emplace_back(info.name);
     summaries += fmt::format("{}{}: {}", summaries.empty() ? "" : "; ", info.name, info.summary);
   }
@@ -156,19 +176,31 @@ void addRunCommand(CLI::App& app) {
                    "Simulated seconds after which a reconfiguration stops (default: 3600 + 10 per "
                    "module, times the movers per --max-motions slot)")
       ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--param", args->parameters,
+                   "A program parameter KEY=VALUE (repeatable; over the scene's \"parameters\"); "
+                   "the program's own are listed in its docs")
+      ->allow_extra_args(false);
+  command->add_option("--root", args->root, "flood: the root cell x,y,z (as --param root=X,Y,Z)");
+  command
+      ->add_option("--until", args->untilS,
+                   "Stop at this simulated time in seconds, for programs that never fall quiet "
+                   "(default: when no event remains)")
+      ->check(CLI::PositiveNumber);
   addOutputOption(*command, args->out);
   command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
   command->add_flag("--stats", args->stats,
                     "Print the run's statistics (events by kind, messages by type, motions, "
                     "deformations, simulated and wall time) on standard error");
-  command->callback([args, command] {
+  command->callback([args, command, added] {
     experiment::RunRequest request;
     request.program = args->program;
+    request.added = added;
     if (!args->goal.empty()) request.goal = parseCell("--goal", args->goal);
     if (!args->start.empty()) request.start = parseCell("--start", args->start);
     request.simulation.rules = args->rules.options();
     request.simulation.connectivity = request.simulation.rules.connectivity;
-    const algorithms::ProgramInfo info = *algorithms::programInfo(args->program);
+    const algorithms::ProgramInfo info = *algorithms::programInfo(args->program, added);
     if (info.reshapes) {
       // Reconfiguration keeps the ensemble in one piece unless told otherwise; the engine checks
       // it live, and the modules' gradient judges rules without it (docs/reconfiguration.md).
@@ -178,8 +210,8 @@ void addRunCommand(CLI::App& app) {
     }
     request.simulation.maxMotions = args->maxMotions;
     request.simulation.seed = args->seed;
-    request.simulation.messageDelay = program::Time(args->delayMs * program::kMillisecond);
-    request.simulation.messageJitter = program::Time(args->jitterMs * program::kMillisecond);
+    request.simulation.messageDelay = Time(args->delayMs * kMillisecond);
+    request.simulation.messageJitter = Time(args->jitterMs * kMillisecond);
     request.trace = !args->trace.empty();
     request.description = fmt::format("{} on {}", args->program, args->scene);
     io::Scene scene = unwrap(io::readScene(args->scene));
@@ -191,14 +223,27 @@ void addRunCommand(CLI::App& app) {
     for (const target::Target& target : targets) {
       request.targets.push_back(unwrap(target.cells()));
     }
-    if (args->timeoutS > 0)
-      request.reshape.timeout = program::Time(args->timeoutS * program::kSecond);
+    if (args->timeoutS > 0) request.reshape.timeout = Time(args->timeoutS * kSecond);
+    if (args->untilS > 0) request.until = Time(args->untilS * kSecond);
+    // The scene's parameters for this program, then the command line's over them.
+    if (const auto inScene = scene.parameters.find(args->program);
+        inScene != scene.parameters.end()) {
+      request.parameters = inScene->second;
+    }
+    if (!args->root.empty()) request.parameters["root"] = args->root;
+    for (const std::string& pair : args->parameters) {
+      const size_t equals = pair.find('=');
+      if (equals == std::string::npos || equals == 0) {
+        throw UsageError("--param " + pair + ": expected KEY=VALUE");
+      }
+      request.parameters[pair.substr(0, equals)] = pair.substr(equals + 1);
+    }
     const motion::RuleTable table;
     const experiment::RunResult result =
         unwrap(experiment::runProgram(std::move(scene.world), table, request));
     // A failed reconfiguration is written like a successful one, to be looked at; then it fails.
     if (request.trace) writeOutput(args->trace, result.trace);
-    writeOutput(args->out, runJson(args->program, result));
+    writeOutput(args->out, runJson(info, result, request.parameters));
     if (args->stats) printStatistics(result.statistics);
     if (result.reshape && !result.reshape->success) {
       throw UsageError("the target was not built: " + result.reshape->reason);

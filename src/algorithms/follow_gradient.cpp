@@ -7,7 +7,6 @@
 namespace datomsim::algorithms {
 
 using geometry::Cell;
-using program::Message;
 
 void FollowGradientProgram::onTimer(program::ModuleContext& context, int tag) {
   if (tag != kFollowTrigger || !isMobile(context) || phase_ != Phase::kIdle) return;
@@ -64,7 +63,7 @@ void FollowGradientProgram::choose(program::ModuleContext& context) {
   waitingAcks_ = sendToBlockingModules<DeformMsg>(context);
   if (waitingAcks_ == 0) {
     phase_ = Phase::kMoving;
-    const program::MoveResult moving = context.move(*chosen_);
+    const MoveResult moving = context.move(*chosen_);
     if (!moving.ok()) fail(moving.error());
   }
 }
@@ -145,7 +144,7 @@ void FollowGradientProgram::handleRouted(program::ModuleContext& context, const 
     // Algorithm 1, AckDeform handler: move once every blocking module has answered.
     if (--waitingAcks_ == 0) {
       phase_ = Phase::kMoving;
-      const program::MoveResult moving = context.move(*chosen_);
+      const MoveResult moving = context.move(*chosen_);
       if (!moving.ok()) fail(moving.error());
     }
   } else if (type == AckRelease::kName && phase_ == Phase::kReleasing) {

@@ -42,7 +42,7 @@ class FollowGradientProgram : public GradientProgram {
       : GradientProgram(parameters) {}
 
   void onMessage(program::ModuleContext& context, int ownConnector,
-                 const program::Message& message) override;
+                 const Message& message) override;
   void onTimer(program::ModuleContext& context, int tag) override;
   void onDeformationDone(program::ModuleContext& context) override;
   void onMotionDone(program::ModuleContext& context) override;

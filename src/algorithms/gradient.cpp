@@ -15,7 +15,7 @@ void GradientProgram::onStart(program::ModuleContext& context) {
 }
 
 void GradientProgram::onMessage(program::ModuleContext& context, int ownConnector,
-                                const program::Message& message) {
+                                const Message& message) {
   // The mobile stores no distance, but it passes routed notices on like any module.
   if (isMobile(context)) {
     if (const auto* notice = message.as<DistanceNotice>()) {
@@ -63,7 +63,7 @@ void GradientProgram::spread(program::ModuleContext& context, const Cell& cell, 
       if ((latched & (1u << k)) && context.cellBehind(k) == around) connector = k;
     }
     if (connector >= 0) {
-      recordFailure(context.send(connector, program::Message::of(DistanceMsg{cell, distance})));
+      recordFailure(context.send(connector, Message::of(DistanceMsg{cell, distance})));
     } else {
       DistanceNotice notice;
       notice.target = around;

@@ -54,7 +54,7 @@ class GradientProgram : public program::ModuleProgram {
 
   void onStart(program::ModuleContext& context) override;
   void onMessage(program::ModuleContext& context, int ownConnector,
-                 const program::Message& message) override;
+                 const Message& message) override;
 
   // The distance this module stores for a neighbouring cell, or kUnknown.
   int32_t distanceOf(program::ModuleContext& context, const geometry::Cell& cell) const;

@@ -10,7 +10,6 @@
 namespace datomsim::algorithms {
 
 using geometry::Cell;
-using program::Message;
 
 namespace {
 
@@ -21,22 +20,22 @@ constexpr int kRenew = 5;
 // Tags from here on are a mover's watchdog for one round of asking, deforming or releasing.
 constexpr int kWatchdog = 1000;
 // How long a mover waits for answers before it gives a round up.
-constexpr program::Time kPatience = 3 * program::kSecond;
+constexpr Time kPatience = 3 * kSecond;
 // How long a helper holds a piston for a motion that does not come: the mover may have given up.
-constexpr program::Time kLeaseTime = 60 * program::kSecond;
+constexpr Time kLeaseTime = 60 * kSecond;
 constexpr Color kMoving{255, 160, 32};
 constexpr Color kSettled{96, 160, 255};
 
 // Versions of the gradient are numbered by period of simulated time: every module that fills a
 // cell during a period asks for the version of the next one, at its start, so that one flood
 // carries the fills of a whole period (docs/reconfiguration.md).
-constexpr program::Time kVersionPeriod = 20 * 1000 * program::kMillisecond;
+constexpr Time kVersionPeriod = 20 * 1000 * kMillisecond;
 constexpr int kNewVersion = 4;
 constexpr int kSpread = 6;
-constexpr program::Time kSpreadDelay = 30 * program::kMillisecond;
+constexpr Time kSpreadDelay = 30 * kMillisecond;
 constexpr int32_t kLayerBias = 3;
 
-uint64_t nextVersion(program::Time now) {
+uint64_t nextVersion(Time now) {
   return uint64_t(now / kVersionPeriod) + 1;
 }
 
@@ -69,7 +68,7 @@ void ReconfigureProgram::onStart(program::ModuleContext& context) {
   if (settled_) return repairPocket(context);
   context.setColor(kMoving);
   phase_ = Phase::kWaiting;
-  context.setTimer(context.random().between(100, 600) * program::kMillisecond, kStep);
+  context.setTimer(context.random().between(100, 600) * kMillisecond, kStep);
 }
 
 // ---- Pockets ------------------------------------------------------------------------------
@@ -109,7 +108,7 @@ void ReconfigureProgram::repairPocket(program::ModuleContext& context) {
       pocketAttempts_ = 0;
       context.setColor(kMoving);
       phase_ = Phase::kWaiting;
-      context.setTimer(context.random().between(100, 600) * program::kMillisecond, kStep);
+      context.setTimer(context.random().between(100, 600) * kMillisecond, kStep);
       return;
     }
   }
@@ -291,12 +290,12 @@ void ReconfigureProgram::onMessage(program::ModuleContext& context, int ownConne
         return releaseHelpers(context);
       }
       phase_ = Phase::kMoving;
-      const program::MoveResult moved = context.move(*chosen_);
+      const MoveResult moved = context.move(*chosen_);
       if (!moved.ok()) {
         attemptFailed();
         retryAfterRelease_ = true;
         releaseHelpers(context);
-      } else if (moved.state() == program::MoveResult::State::kQueued) {
+      } else if (moved.state() == MoveResult::State::kQueued) {
         // Waiting for its turn may outlast the helpers' leases: renewed while it waits.
         context.setTimer(kLeaseTime / 2, kRenew);
       }
@@ -342,7 +341,7 @@ void ReconfigureProgram::onTimer(program::ModuleContext& context, int tag) {
   }
   if (tag == kLease) {
     // Grants whose mover never came back lapse; the piston goes when none is left.
-    const program::Time now = context.now();
+    const Time now = context.now();
     const size_t before = grants_.size();
     std::erase_if(grants_, [&](const Grant& grant) { return grant.until <= now; });
     holders_ -= int(before - grants_.size());
@@ -356,7 +355,7 @@ void ReconfigureProgram::onTimer(program::ModuleContext& context, int tag) {
       if (released.ok()) {
         releasing_ = true;
       } else {
-        context.setTimer(500 * program::kMillisecond, kReleaseAgain);
+        context.setTimer(500 * kMillisecond, kReleaseAgain);
       }
     }
     return;
@@ -506,7 +505,7 @@ void ReconfigureProgram::choose(program::ModuleContext& context) {
   refusedByHelper_ = false;
   if (chosen_->deformations.empty()) {
     phase_ = Phase::kMoving;
-    const program::MoveResult moved = context.move(*chosen_);
+    const MoveResult moved = context.move(*chosen_);
     if (!moved.ok()) {
       attemptFailed();
       chosen_.reset();
@@ -539,7 +538,7 @@ void ReconfigureProgram::sendToHelpers(program::ModuleContext& context, bool rel
 void ReconfigureProgram::retryLater(program::ModuleContext& context) {
   phase_ = Phase::kWaiting;
   ++idleRounds_;
-  context.setTimer(context.random().between(200, 1200) * program::kMillisecond, kStep);
+  context.setTimer(context.random().between(200, 1200) * kMillisecond, kStep);
 }
 
 void ReconfigureProgram::releaseHelpers(program::ModuleContext& context) {
@@ -579,8 +578,7 @@ void ReconfigureProgram::onMotionDone(program::ModuleContext& context) {
   releaseHelpers(context);
 }
 
-void ReconfigureProgram::onMotionRefused(program::ModuleContext& context,
-                                         const program::MoveRefusal&) {
+void ReconfigureProgram::onMotionRefused(program::ModuleContext& context, const MoveRefusal&) {
   attemptFailed();
   retryAfterRelease_ = true;
   releaseHelpers(context);
@@ -630,7 +628,7 @@ void ReconfigureProgram::settle(program::ModuleContext& context) {
   // start of the next period.
   const uint64_t version = nextVersion(context.now());
   if (version > version_) {
-    context.setTimer(program::Time(version) * kVersionPeriod - context.now(), kNewVersion);
+    context.setTimer(Time(version) * kVersionPeriod - context.now(), kNewVersion);
   }
 }
 
@@ -691,7 +689,7 @@ void ReconfigureProgram::onReleaseRequest(program::ModuleContext& context,
     releasing_ = true;
   } else {
     // A motion still needs the piston: let go once it is over.
-    context.setTimer(500 * program::kMillisecond, kReleaseAgain);
+    context.setTimer(500 * kMillisecond, kReleaseAgain);
   }
 }
 

@@ -130,12 +130,11 @@ class ReconfigureProgram : public program::ModuleProgram {
 
   void onStart(program::ModuleContext& context) override;
   void onMessage(program::ModuleContext& context, int ownConnector,
-                 const program::Message& message) override;
+                 const Message& message) override;
   void onTimer(program::ModuleContext& context, int tag) override;
   void onDeformationDone(program::ModuleContext& context) override;
   void onMotionDone(program::ModuleContext& context) override;
-  void onMotionRefused(program::ModuleContext& context,
-                       const program::MoveRefusal& refusal) override;
+  void onMotionRefused(program::ModuleContext& context, const MoveRefusal& refusal) override;
 
   bool settled() const { return settled_; }
   int motions() const { return motions_; }
@@ -234,7 +233,7 @@ class ReconfigureProgram : public program::ModuleProgram {
   // who waits for it.
   struct Grant {
     uint32_t request;  // the mover's request number, unique to the mover
-    program::Time until;
+    Time until;
   };
   int heldAxis_ = -1;
   int holders_ = 0;

@@ -1,11 +1,15 @@
 #include "algorithms/registry.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <map>
 
+#include "algorithms/flood.h"
 #include "algorithms/follow_gradient.h"
 #include "algorithms/walkers.h"
+#include "api/program_adapter.h"
 
 namespace datomsim::algorithms {
 
@@ -108,6 +112,55 @@ class TypedPrograms final : public ProgramSet {
   std::vector<std::pair<ModuleId, const Program*>> made_;  // in the order made: increasing id
 };
 
+// The programs of a public-API entry: each module's program behind an adapter, all sharing the
+// checked parameters.
+class EntryPrograms final : public ProgramSet {
+ public:
+  EntryPrograms(const ProgramEntry& entry, Parameters parameters, size_t moduleCount)
+      : entry_(entry), parameters_(std::move(parameters)) {
+    made_.reserve(moduleCount);
+  }
+
+  std::unique_ptr<program::ModuleProgram> make(ModuleId id) override {
+    auto program = std::make_unique<api::ProgramAdapter>(entry_.make(id, parameters_), parameters_);
+    made_.push_back({id, program.get()});
+    return program;
+  }
+
+  std::vector<std::pair<geometry::Cell, int>> distances(
+      const std::function<geometry::Cell(ModuleId)>&) const override {
+    return {};
+  }
+  std::optional<MobileOutcome> mobile() const override { return std::nullopt; }
+  std::optional<std::pair<ModuleId, std::string>> failure() const override { return std::nullopt; }
+
+  std::vector<ReportedValues> reports(
+      const std::function<geometry::Cell(ModuleId)>& cellOf) const override {
+    struct Collector final : Report {
+      void set(std::string_view key, double value) override {
+        byKey[std::string(key)].push_back({cell, value});
+      }
+      geometry::Cell cell;
+      std::map<std::string, std::vector<std::pair<geometry::Cell, double>>> byKey;
+    } collector;
+    for (const auto& [id, program] : made_) {
+      collector.cell = cellOf(id);
+      program->program().report(collector);
+    }
+    std::vector<ReportedValues> out;
+    for (auto& [key, values] : collector.byKey) {
+      std::sort(values.begin(), values.end());
+      out.push_back({key, std::move(values)});
+    }
+    return out;
+  }
+
+ private:
+  const ProgramEntry& entry_;
+  Parameters parameters_;
+  std::vector<std::pair<ModuleId, const api::ProgramAdapter*>> made_;
+};
+
 template <typename Program>
 std::unique_ptr<ProgramSet> make(const ProgramParameters& parameters, size_t moduleCount) {
   return std::make_unique<TypedPrograms<Program>>(parameters, moduleCount);
@@ -141,34 +194,81 @@ const std::array<ProgramInfo, kEntries.size()> kPrograms = [] {
   return infos;
 }();
 
-std::string knownNames() {
-  std::string names;
-  for (const ProgramInfo& info : kPrograms) {
-    names += (names.empty() ? "" : ", ") + std::string(info.name);
-  }
-  return names;
+ProgramInfo infoOf(const ProgramEntry& entry) {
+  ProgramInfo info;
+  info.name = entry.name;
+  info.summary = entry.summary;
+  info.needsGoal = false;
+  info.entry = &entry;
+  return info;
 }
 
 }  // namespace
 
-std::span<const ProgramInfo> programs() {
-  return kPrograms;
+std::span<const ProgramEntry> builtInEntries() {
+  static const std::vector<ProgramEntry> entries = {FloodProgram::entry()};
+  return entries;
 }
 
-Result<ProgramInfo> programInfo(std::string_view name) {
-  for (const ProgramInfo& info : kPrograms) {
+std::vector<ProgramInfo> programs(std::span<const ProgramEntry> added) {
+  std::vector<ProgramInfo> infos(kPrograms.begin(), kPrograms.end());
+  for (const ProgramEntry& entry : builtInEntries()) infos.push_back(infoOf(entry));
+  for (const ProgramEntry& entry : added) infos.push_back(infoOf(entry));
+  return infos;
+}
+
+Result<ProgramInfo> programInfo(std::string_view name, std::span<const ProgramEntry> added) {
+  std::string names;
+  for (const ProgramInfo& info : programs(added)) {
     if (info.name == name) return info;
+    names += (names.empty() ? "" : ", ") + std::string(info.name);
   }
-  return Error{"unknown program \"" + std::string(name) + "\"; known programs: " + knownNames()};
+  return Error{"unknown program \"" + std::string(name) + "\"; known programs: " + names};
+}
+
+Status checkAdded(std::span<const ProgramEntry> added) {
+  for (size_t i = 0; i < added.size(); ++i) {
+    const std::string& name = added[i].name;
+    if (name.empty() || name.find_first_of(" \t\n") != std::string::npos) {
+      return Error{"a program's name must be one word, not \"" + name + "\""};
+    }
+    if (!added[i].make) return Error{"program " + name + " has no make function"};
+    for (const ProgramInfo& info : programs(added.subspan(0, i))) {
+      if (info.name != name) continue;
+      const bool builtIn =
+          !info.entry || info.entry < added.data() || info.entry >= added.data() + added.size();
+      return Error{builtIn ? "program " + name + " is built in: choose another name"
+                           : "two programs are named " + name};
+    }
+  }
+  return Ok{};
 }
 
 Result<std::unique_ptr<ProgramSet>> makePrograms(std::string_view name,
                                                  const ProgramParameters& parameters,
-                                                 size_t moduleCount) {
+                                                 size_t moduleCount,
+                                                 std::span<const ProgramEntry> added) {
   for (const Entry& entry : kEntries) {
-    if (entry.info.name == name) return entry.make(parameters, moduleCount);
+    if (entry.info.name != name) continue;
+    if (!parameters.given.empty()) {
+      return Error{fmt::format("program {} has no parameter \"{}\" (it takes none)", name,
+                               parameters.given.begin()->first)};
+    }
+    return entry.make(parameters, moduleCount);
   }
-  return Error{programInfo(name).error()};
+  const auto info = programInfo(name, added);
+  if (!info.ok()) return Error{info.error()};
+  const ProgramEntry& entry = *info->entry;
+  auto checked = Parameters::check(name, entry.parameters, parameters.given);
+  if (!checked.ok()) return Error{checked.error()};
+  if (entry.check) {
+    if (const auto problem = entry.check(*checked)) {
+      return Error{fmt::format("program {}: {}", name, *problem)};
+    }
+  }
+  std::unique_ptr<ProgramSet> set =
+      std::make_unique<EntryPrograms>(entry, std::move(checked).value(), moduleCount);
+  return set;
 }
 
 }  // namespace datomsim::algorithms

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -13,7 +14,8 @@
 
 #include "algorithms/gradient.h"
 #include "algorithms/reconfigure.h"
-#include "common/result.h"
+#include "datomsim/program.h"
+#include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "program/module_program.h"
 
@@ -24,6 +26,7 @@ inline constexpr std::string_view kGradient = "gradient";
 inline constexpr std::string_view kFollowGradient = "follow-gradient";
 inline constexpr std::string_view kWalkers = "walkers";
 inline constexpr std::string_view kReconfigure = "reconfigure";
+inline constexpr std::string_view kFlood = "flood";
 
 struct ProgramInfo {
   std::string_view name;
@@ -36,18 +39,28 @@ struct ProgramInfo {
   // The program reshapes the ensemble into the scene's target: the driver needs a target with as
   // many cells as modules, and watches the run for the end, a deadlock or a timeout.
   bool reshapes = false;
+  // A program of the public API (datomsim/program.h): a built-in one such as flood, or one a
+  // researcher's executable adds; its parameters are declared there.
+  const ProgramEntry* entry = nullptr;
 };
 
 // What the programs of a run are told: the gradient's goal and mobile, the target shape.
 struct ProgramParameters {
   GradientParameters gradient;
   std::shared_ptr<const TargetShape> target;
+  // --param key=value and the scene's parameters for the program, checked against its
+  // declaration; programs that declare none refuse any.
+  std::map<std::string, std::string> given;
 };
 
-// gradient, then follow-gradient.
-std::span<const ProgramInfo> programs();
+// The programs of the public API built into the library (flood).
+std::span<const ProgramEntry> builtInEntries();
+// Every program a run can name: the built-in ones, then `added` (a researcher's executable).
+std::vector<ProgramInfo> programs(std::span<const ProgramEntry> added = {});
 // The entry of a name, or an error listing the known names.
-Result<ProgramInfo> programInfo(std::string_view name);
+Result<ProgramInfo> programInfo(std::string_view name, std::span<const ProgramEntry> added = {});
+// Refuses added programs whose name is empty, taken by a built-in program or given twice.
+Status checkAdded(std::span<const ProgramEntry> added);
 
 // How a walking mobile's run ended.
 struct MobileOutcome {
@@ -55,6 +68,13 @@ struct MobileOutcome {
   bool arrived = false;
   std::optional<std::string> failure;  // why the mobile stopped
   std::string wait;                    // what it waited for when the run ended
+};
+
+// What the modules of a public-API program reported at the end of the run under one key, by
+// cell (Program::report).
+struct ReportedValues {
+  std::string key;
+  std::vector<std::pair<geometry::Cell, double>> values;  // sorted by cell
 };
 
 // A module of the reconfigure program that has not settled, and what it was doing.
@@ -98,12 +118,18 @@ class ProgramSet {
   // The first module other than the mobile whose program gave up (a refused compression, say),
   // in increasing id order, with its reason: as much a failed run as a stuck mobile.
   virtual std::optional<std::pair<ModuleId, std::string>> failure() const = 0;
+  // What public-API programs reported, by key in alphabetical order.
+  virtual std::vector<ReportedValues> reports(
+      const std::function<geometry::Cell(ModuleId)>& /*cellOf*/) const {
+    return {};
+  }
 };
 
 // The programs of a named algorithm for a world of `moduleCount` modules; refuses an unknown
-// name, listing the known ones.
+// name, listing the known ones, and parameters the program does not declare or that are bad.
 Result<std::unique_ptr<ProgramSet>> makePrograms(std::string_view name,
                                                  const ProgramParameters& parameters,
-                                                 size_t moduleCount);
+                                                 size_t moduleCount,
+                                                 std::span<const ProgramEntry> added = {});
 
 }  // namespace datomsim::algorithms

@@ -63,7 +63,7 @@ class Router {
                    [&](int connector, const RoutedMsg& next) {
                      T copy = routed;
                      static_cast<RoutedMsg&>(copy) = next;
-                     return context.send(connector, program::Message::of(copy));
+                     return context.send(connector, Message::of(copy));
                    });
   }
 

@@ -74,7 +74,7 @@ void WalkerProgram::step(program::ModuleContext& context) {
   if (refusedInARow_ >= kStubborn) {
     best = candidates.begin() + static_cast<long>(context.random().below(candidates.size()));
   }
-  const program::MoveResult result = context.move(*best);
+  const MoveResult result = context.move(*best);
   if (!result.ok()) {
     ++refusals_;
     ++refusedInARow_;
@@ -90,7 +90,7 @@ void WalkerProgram::retryLater(program::ModuleContext& context) {
     return;
   }
   // A random wait, so that two walkers that refused each other do not ask again together.
-  context.setTimer(context.random().between(50, 400) * program::kMillisecond, kRetry);
+  context.setTimer(context.random().between(50, 400) * kMillisecond, kRetry);
 }
 
 void WalkerProgram::onTimer(program::ModuleContext& context, int tag) {
@@ -103,7 +103,7 @@ void WalkerProgram::onMotionDone(program::ModuleContext& context) {
   step(context);
 }
 
-void WalkerProgram::onMotionRefused(program::ModuleContext& context, const program::MoveRefusal&) {
+void WalkerProgram::onMotionRefused(program::ModuleContext& context, const MoveRefusal&) {
   ++refusals_;
   ++refusedInARow_;
   retryLater(context);

@@ -30,8 +30,7 @@ class WalkerProgram : public program::ModuleProgram {
   void onStart(program::ModuleContext& context) override;
   void onTimer(program::ModuleContext& context, int tag) override;
   void onMotionDone(program::ModuleContext& context) override;
-  void onMotionRefused(program::ModuleContext& context,
-                       const program::MoveRefusal& refusal) override;
+  void onMotionRefused(program::ModuleContext& context, const MoveRefusal& refusal) override;
 
   bool walks() const { return walks_; }
   int steps() const { return steps_; }

@@ -11,7 +11,7 @@
 #include <functional>
 #include <string_view>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 
 namespace datomsim {
 

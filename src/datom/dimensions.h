@@ -7,7 +7,7 @@
 // valid: r > 0 and 0 <= t < t_max.
 #pragma once
 
-#include "common/result.h"
+#include "datomsim/result.h"
 
 namespace datomsim::datom {
 

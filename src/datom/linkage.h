@@ -13,8 +13,8 @@
 // the connector turns about its edge H and not about its centre P_i.
 #pragma once
 
-#include "common/result.h"
 #include "datom/dimensions.h"
+#include "datomsim/result.h"
 
 namespace datomsim::datom {
 

@@ -11,8 +11,8 @@
 #include <array>
 #include <vector>
 
-#include "common/result.h"
 #include "datom/dimensions.h"
+#include "datomsim/result.h"
 #include "geometry/lattice.h"
 #include "geometry/vec3.h"
 

@@ -10,9 +10,9 @@
 
 #include <array>
 
-#include "common/result.h"
 #include "datom/dimensions.h"
 #include "datom/linkage.h"
+#include "datomsim/result.h"
 #include "geometry/lattice.h"
 #include "geometry/vec3.h"
 

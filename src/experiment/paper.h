@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "experiment/run.h"
 #include "motion/reach.h"
 #include "world/world.h"

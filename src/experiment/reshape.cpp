@@ -53,13 +53,11 @@ std::vector<Cell> unreachable(const world::World& world, const motion::RuleTable
 }  // namespace
 
 ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int maxMotions) {
-  const program::Time share =
-      maxMotions > 0
-          ? std::max<program::Time>(1, (program::Time(movers) + maxMotions - 1) / maxMotions)
-          : 1;
+  const Time share =
+      maxMotions > 0 ? std::max<Time>(1, (Time(movers) + maxMotions - 1) / maxMotions) : 1;
   limits.stall *= share;
   if (limits.timeout == 0) {
-    limits.timeout = (3600 + 10 * program::Time(modules)) * program::kSecond * share;
+    limits.timeout = (3600 + 10 * Time(modules)) * kSecond * share;
   }
   return limits;
 }
@@ -70,8 +68,8 @@ ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& 
   ReshapeOutcome outcome;
   simulator.startAll();
   size_t filled = filledCount(simulator.world(), target);
-  program::Time lastFill = 0;
-  for (program::Time horizon = limits.slice;; horizon += limits.slice) {
+  Time lastFill = 0;
+  for (Time horizon = limits.slice;; horizon += limits.slice) {
     const Status status = simulator.run(horizon);
     if (!status.ok()) {
       outcome.reason = status.error();
@@ -107,9 +105,9 @@ ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& 
         outcome.reason = fmt::format(
             "{}: {} of {} target cells filled; {} modules did not settle ({}); empty: {}{}",
             timedOut ? fmt::format("timeout after {:g} s of simulated time",
-                                   double(limits.timeout) / program::kSecond)
+                                   double(limits.timeout) / kSecond)
                      : fmt::format("deadlock: no target cell filled for {:g} s",
-                                   double(limits.stall) / program::kSecond),
+                                   double(limits.stall) / kSecond),
             filled, target.size(), movers.size(), waits, cellList(missing),
             lost.empty() ? "" : fmt::format("; of which no module can reach {}", cellList(lost)));
       }

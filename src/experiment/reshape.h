@@ -20,11 +20,11 @@
 namespace datomsim::experiment {
 
 struct ReshapeLimits {
-  program::Time slice = 5 * program::kSecond;
+  Time slice = 5 * kSecond;
   // No new cell filled for this long: a deadlock.
-  program::Time stall = 600 * program::kSecond;
+  Time stall = 600 * kSecond;
   // The whole run; 0: 3600 s and 10 s more per module.
-  program::Time timeout = 0;
+  Time timeout = 0;
 };
 
 // The limits of a run whose motions wait in a queue of `maxMotions` (0: no limit) shared by

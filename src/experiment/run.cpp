@@ -46,12 +46,38 @@ std::string summaryJson(const sim::Statistics& statistics) {
                      statistics.events(), statistics.motions, statistics.deformations, messages);
 }
 
+// A program's cell parameters lie inside the world, and hold a module where it says so.
+Status checkCellParameters(const world::World& world, const ProgramEntry& entry,
+                           const std::map<std::string, std::string>& given) {
+  const auto checked = Parameters::check(entry.name, entry.parameters, given);
+  if (!checked.ok()) return Error{checked.error()};
+  for (const Parameter& parameter : entry.parameters) {
+    if (parameter.type != Parameter::Type::kCell) continue;
+    const Cell cell = checked->cell(parameter.name);
+    if (!world.isInside(cell)) {
+      return Error{fmt::format("parameter {} of program {}: cell {} is outside the world",
+                               parameter.name, entry.name, toString(cell))};
+    }
+    if (parameter.holdsModule && !world.moduleAt(cell)) {
+      return Error{fmt::format("parameter {} of program {}: cell {} holds no module",
+                               parameter.name, entry.name, toString(cell))};
+    }
+  }
+  return Ok{};
+}
+
 }  // namespace
 
 Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
                              const RunRequest& request) {
-  const auto info = algorithms::programInfo(request.program);
+  const auto info = algorithms::programInfo(request.program, request.added);
   if (!info.ok()) return Error{info.error()};
+  if (info->entry) {
+    if (const Status cells = checkCellParameters(world, *info->entry, request.parameters);
+        !cells.ok()) {
+      return Error{cells.error()};
+    }
+  }
   if (info->needsGoal && !request.goal) {
     return Error{std::string(info->name) + " needs a goal cell (--goal)"};
   }
@@ -106,8 +132,9 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   world.latchAllNeighbours();
 
   auto programs = algorithms::makePrograms(
-      request.program, {{request.goal.value_or(Cell{}), mobile.value_or(ModuleId{})}, shape},
-      world.size());
+      request.program,
+      {{request.goal.value_or(Cell{}), mobile.value_or(ModuleId{})}, shape, request.parameters},
+      world.size(), request.added);
   if (!programs.ok()) return Error{programs.error()};
 
   sim::SimulationOptions options = request.simulation;
@@ -127,7 +154,8 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   } else {
     // The gradient settles first; then, where the mobile walks, it is triggered.
     simulator.startAll();
-    status = simulator.run();
+    status = simulator.run(request.until.value_or(INT64_MAX));
+    result.stoppedAtLimit = status.ok() && simulator.pending();
   }
   if (status.ok() && info->mobileWalks) {
     simulator.trigger(*mobile, algorithms::FollowGradientProgram::kFollowTrigger);
@@ -152,6 +180,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     result.path = walk->path;
   }
   result.walkers = (*programs)->walkers();
+  result.reports = (*programs)->reports([&](ModuleId id) { return ended.find(id)->cell; });
   if (request.trace) {
     trace.footer(simulator.now(), summaryJson(result.statistics));
     result.trace = trace.text();

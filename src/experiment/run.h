@@ -6,13 +6,15 @@
 // and follows it to the goal.
 #pragma once
 
+#include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "algorithms/registry.h"
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "experiment/reshape.h"
 #include "geometry/cell.h"
 #include "motion/motion.h"
@@ -34,6 +36,14 @@ struct RunRequest {
   std::vector<std::vector<geometry::Cell>> targets;
   // reconfigure: when the run stops if the target is not built.
   ReshapeLimits reshape;
+  // Programs of the public API a researcher's executable adds (datomsim::main); they must
+  // outlive the run.
+  std::span<const ProgramEntry> added;
+  // The program's parameters by name, as text (--param, the scene's "parameters").
+  std::map<std::string, std::string> parameters;
+  // Programs that run on by themselves (timers): stop at this simulated time. The built-in ones
+  // end when no event remains.
+  std::optional<Time> until;
 };
 
 struct RunResult {
@@ -47,12 +57,17 @@ struct RunResult {
   // reconfigure: whether the target was built, and the ensemble at the end. A run that does not
   // build it is still a result (success false, with the reason), so that it can be inspected.
   std::optional<ReshapeOutcome> reshape;
+  // Public-API programs: what the modules reported (Program::report), by key.
+  std::vector<algorithms::ReportedValues> reports;
+  // Whether events remained when the run stopped at `until`.
+  bool stoppedAtLimit = false;
   sim::Statistics statistics;
   std::string trace;  // JSON Lines, when asked for
 };
 
-// Refuses a goal or start outside the world, an unknown program, follow-gradient without a
-// start, reconfigure without a target of as many cells as modules, a run stopped by an invariant
+// Refuses a goal or start outside the world, an unknown program, bad parameters (and cell
+// parameters outside the world, or empty where the program needs a module), follow-gradient without
+// a start, reconfigure without a target of as many cells as modules, a run stopped by an invariant
 // (the violation's report) and a mobile that fails to arrive.
 Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
                              const RunRequest& request);

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "common/result.h"
 #include "datom/parts.h"
+#include "datomsim/result.h"
 #include "geometry/vec3.h"
 
 namespace datomsim::exporting {

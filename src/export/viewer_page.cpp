@@ -1,5 +1,6 @@
 #include "export/viewer_page.h"
 
+#include <dlfcn.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -154,6 +155,14 @@ Result<std::string> readFile(const std::filesystem::path& path) {
 
 Result<std::filesystem::path> executableDirectory() {
   std::error_code error;
+  // The binary that holds this code: libdatomsim.so when a researcher's executable links it (its
+  // prefix's share/datomsim has the bundle), else the executable itself.
+  Dl_info info;
+  if (dladdr(reinterpret_cast<void*>(&executableDirectory), &info) != 0 && info.dli_fname &&
+      std::string_view(info.dli_fname).find(".so") != std::string_view::npos) {
+    const std::filesystem::path library = std::filesystem::canonical(info.dli_fname, error);
+    if (!error) return library.parent_path();
+  }
   const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
   if (error) {
     return Error{"cannot find the running executable (/proc/self/exe): " + error.message()};
@@ -164,7 +173,9 @@ Result<std::filesystem::path> executableDirectory() {
 std::vector<std::filesystem::path> viewerBundleCandidates(
     const std::filesystem::path& executableDirectory) {
   return {executableDirectory / kViewerBundleName,
-          executableDirectory.parent_path() / "share" / "datomsim" / kViewerBundleName};
+          executableDirectory.parent_path() / "share" / "datomsim" / kViewerBundleName,
+          // The shared library in a build tree (lib/ beside bin/).
+          executableDirectory.parent_path() / "bin" / kViewerBundleName};
 }
 
 Result<std::string> loadViewerBundle(const std::filesystem::path& explicitPath,

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "world/world.h"
 
@@ -36,11 +36,12 @@ struct ViewerPage {
 // The whole file's bytes.
 Result<std::string> readFile(const std::filesystem::path& path);
 
-// The directory of the running executable (Linux: /proc/self/exe).
+// The directory of the binary holding datomsim's code: the shared library's when a researcher's
+// executable links it, else the running executable's (Linux: /proc/self/exe).
 Result<std::filesystem::path> executableDirectory();
 
-// Where the bundle is looked for, in order: next to the executable, then in
-// ../share/datomsim/ (an installed layout).
+// Where the bundle is looked for, in order: next to that binary, then in ../share/datomsim/ (an
+// installed layout), then in ../bin/ (the shared library of a build tree).
 std::vector<std::filesystem::path> viewerBundleCandidates(
     const std::filesystem::path& executableDirectory);
 

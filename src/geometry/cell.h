@@ -1,39 +1,16 @@
 // Integer cell coordinates in the skew FCC lattice (docs/conventions.md, section 1; VisibleSim's
-// SkewFCCLattice).
-//
-// A Cell is a value type: an address in the lattice, whether or not a module sits there. Offsets
-// between cells are Cells too.
+// SkewFCCLattice). The Cell itself is a value of the public API (datomsim/cell.h); the lattice
+// layer names it here with what only the library needs.
 #pragma once
 
-#include <compare>
 #include <cstdint>
-#include <string>
+
+#include "datomsim/cell.h"
 
 namespace datomsim::geometry {
 
-struct Cell {
-  int32_t x = 0;
-  int32_t y = 0;
-  int32_t z = 0;
-
-  constexpr Cell operator+(const Cell& o) const { return {x + o.x, y + o.y, z + o.z}; }
-  constexpr Cell operator-(const Cell& o) const { return {x - o.x, y - o.y, z - o.z}; }
-  constexpr Cell operator-() const { return {-x, -y, -z}; }
-  constexpr Cell operator*(int32_t k) const { return {x * k, y * k, z * k}; }
-  constexpr bool operator==(const Cell&) const = default;
-  // Lexicographic by x, then y, then z: the order the command line sorts its outputs in.
-  constexpr auto operator<=>(const Cell&) const = default;
-};
-
-// "x,y,z", the form the command line and VisibleSim's XML use.
-std::string toString(const Cell& cell);
-
-// Test frameworks and logs print cells as (x,y,z).
-template <typename Stream>
-Stream& operator<<(Stream& out, const Cell& cell) {
-  out << '(' << cell.x << ',' << cell.y << ',' << cell.z << ')';
-  return out;
-}
+using datomsim::Cell;
+using datomsim::toString;
 
 // Floor division by 2 for any sign: the skew lattice shifts a layer by floor(z/2) cells.
 constexpr int32_t floorHalf(int32_t v) {

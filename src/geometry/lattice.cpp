@@ -14,10 +14,6 @@ static_assert([] {
   return true;
 }());
 
-std::string toString(const Cell& cell) {
-  return std::to_string(cell.x) + "," + std::to_string(cell.y) + "," + std::to_string(cell.z);
-}
-
 Vec3 worldOffset(const Cell& offset, double spacing) {
   return {(offset.x + offset.z / 2.0) * spacing, (offset.y + offset.z / 2.0) * spacing,
           (std::sqrt(2.0) / 2.0) * offset.z * spacing};

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -48,9 +49,9 @@ constexpr int64_t kInt32Min = std::numeric_limits<int32_t>::min();
 constexpr int64_t kInt32Max = std::numeric_limits<int32_t>::max();
 
 // Top-level and module keys, as bits for "seen" sets.
-constexpr std::array<std::string_view, 9> kTopKeys = {"format",      "version", "name",
-                                                      "description", "grid",    "blockSize",
-                                                      "visiblesim",  "modules", "targets"};
+constexpr std::array<std::string_view, 10> kTopKeys = {
+    "format",    "version",    "name",    "description", "grid",
+    "blockSize", "visiblesim", "modules", "targets",     "parameters"};
 constexpr std::array<std::string_view, 4> kModuleKeys = {"id", "cell", "orientation", "color"};
 
 template <size_t N>
@@ -214,6 +215,36 @@ bool SceneHandler::topField() {
     return fail("modules", "expected an array of modules, got " + brief(v));
   } else if (key_ == "targets") {
     return readTargets(v);
+  } else if (key_ == "parameters") {
+    return readParameters(v);
+  }
+  return true;
+}
+
+// {"PROGRAM": {"NAME": value}}: each value kept as the command line would spell it.
+bool SceneHandler::readParameters(const Json& v) {
+  if (!v.is_object()) return fail("parameters", "expected an object by program, got " + brief(v));
+  for (const auto& [program, values] : v.items()) {
+    const std::string path = "parameters." + program;
+    if (!values.is_object()) return fail(path, "expected an object, got " + brief(values));
+    auto& into = scene_.parameters[program];
+    for (const auto& [name, value] : values.items()) {
+      if (value.is_string()) {
+        into[name] = value.get<std::string>();
+      } else if (value.is_boolean()) {
+        into[name] = value.get<bool>() ? "true" : "false";
+      } else if (value.is_number_integer()) {
+        into[name] = value.dump();
+      } else if (value.is_number_float() && std::isfinite(value.get<double>())) {
+        into[name] = value.dump();
+      } else if (const auto cell = threeIntegers(value, kInt32Min, kInt32Max)) {
+        into[name] = fmt::format("{},{},{}", (*cell)[0], (*cell)[1], (*cell)[2]);
+      } else {
+        return fail(
+            path + "." + name,
+            "expected a string, a number, true or false, or a cell [x, y, z], got " + brief(value));
+      }
+    }
   }
   return true;
 }

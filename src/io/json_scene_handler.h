@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "io/scene.h"
 
 namespace datomsim::io::detail {
@@ -88,6 +88,8 @@ class SceneHandler {
   bool dispatch();
   bool topField();
   bool readVisibleSim(const Json& v);
+  // The "parameters" object.
+  bool readParameters(const Json& v);
   // The "targets" array (json_scene_targets.cpp).
   bool readTargets(const Json& v);
   std::optional<target::Target> readTarget(const Json& v, const std::string& path);

@@ -167,6 +167,18 @@ void emitScene(const Scene& scene, Output& output) {
     if (view.spotlight) sections.push_back("\"spotlight\": " + attributeObject(*view.spotlight));
     out += fmt::format("  \"visiblesim\": {{\n    {}\n  }},\n", fmt::join(sections, ",\n    "));
   }
+  if (!scene.parameters.empty()) {
+    // Values as text: the program types them when it runs, whatever the file said.
+    std::vector<std::string> programs;
+    for (const auto& [program, values] : scene.parameters) {
+      std::vector<std::string> pairs;
+      for (const auto& [name, value] : values) {
+        pairs.push_back(jsonString(name) + ": " + jsonString(value));
+      }
+      programs.push_back(fmt::format("{}: {{{}}}", jsonString(program), fmt::join(pairs, ", ")));
+    }
+    out += fmt::format("  \"parameters\": {{\n    {}\n  }},\n", fmt::join(programs, ",\n    "));
+  }
 
   const auto modules = scene.world.modules();
   if (modules.empty()) {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,6 +54,9 @@ struct Scene {
   VisibleSimView visibleSim;
   // Target shapes in file order, kept as the file gives them (target/target.h).
   std::vector<target::Target> targets;
+  // Module programs' parameters (JSON "parameters"), by program name, then parameter name, as
+  // text (docs/file-formats.md); the program checks them when it runs.
+  std::map<std::string, std::map<std::string, std::string>> parameters;
 };
 
 }  // namespace datomsim::io

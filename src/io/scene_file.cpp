@@ -47,6 +47,12 @@ Result<Scene> readScene(const std::filesystem::path& path) {
 Status writeScene(const Scene& scene, const std::filesystem::path& path) {
   const auto format = sceneFormatOf(path);
   if (!format) return Error{format.error()};
+  if (*format == SceneFormat::kVisibleSimXml && !scene.parameters.empty()) {
+    // Refused rather than dropped: a round trip through XML would lose them silently.
+    return Error{"cannot write " + path.string() +
+                 ": VisibleSim's XML has no place for the scene's program parameters (\"" +
+                 scene.parameters.begin()->first + "\", ...); write JSON instead"};
+  }
   return writeFileAtomically(path, [&](std::FILE* file) -> Status {
     const Status written =
         *format == SceneFormat::kJson ? writeJson(scene, file) : writeVisibleSimXml(scene, file);

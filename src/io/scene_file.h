@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "io/scene.h"
 
 namespace datomsim::io {

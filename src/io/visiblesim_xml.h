@@ -16,7 +16,7 @@
 #include <string>
 #include <string_view>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "io/scene.h"
 
 namespace datomsim::io {

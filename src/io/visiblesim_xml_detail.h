@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
 #include "geometry/vec3.h"

@@ -12,7 +12,7 @@
 #include <variant>
 #include <vector>
 
-#include "common/module_values.h"
+#include "datomsim/values.h"
 #include "geometry/cell.h"
 #include "motion/rule_table.h"
 

@@ -14,17 +14,18 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "common/module_values.h"
-#include "common/random.h"
-#include "common/result.h"
+#include "datomsim/message.h"
+#include "datomsim/move_result.h"
+#include "datomsim/random.h"
+#include "datomsim/result.h"
+#include "datomsim/time.h"
+#include "datomsim/values.h"
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
 #include "motion/motion_values.h"
-#include "program/message.h"
-#include "program/move_result.h"
-#include "program/time.h"
 
 namespace datomsim::program {
 
@@ -84,6 +85,8 @@ class ModuleContext {
   virtual Random& random() = 0;
 
   virtual void setColor(Color color) = 0;
+  // A line in the trace, stamped with the time and the module.
+  virtual void log(std::string_view text) = 0;
 };
 
 class ModuleProgram {
@@ -101,6 +104,9 @@ class ModuleProgram {
   virtual void onMotionRefused(ModuleContext& /*context*/, const MoveRefusal& /*refusal*/) {}
   // A timer this module set has fired, or the run's driver triggered it (Simulator::trigger).
   virtual void onTimer(ModuleContext& /*context*/, int /*tag*/) {}
+  // One of the module's own connectors was latched to a neighbour, or let go; heard at the end of
+  // the event that changed it.
+  virtual void onLatchChanged(ModuleContext& /*context*/, int /*ownConnector*/, bool /*latched*/) {}
 };
 
 // Makes the program of one module. Called once per module, in increasing id order.

@@ -35,8 +35,8 @@ std::string quoted(const std::string& text) {
   return nlohmann::json(text).dump();
 }
 
-std::string seconds(program::Time t) {
-  return number(double(t) / program::kSecond);
+std::string seconds(Time t) {
+  return number(double(t) / kSecond);
 }
 
 std::string partJson(const datom::Part& part, int index) {
@@ -152,14 +152,14 @@ void TraceWriter::header(const world::World& world, const std::string& descripti
   text_ += "}\n";
 }
 
-void TraceWriter::pistonMoving(program::Time, const sim::PistonMove& move) {
+void TraceWriter::pistonMoving(Time, const sim::PistonMove& move) {
   fmt::format_to(std::back_inserter(text_),
                  "{{\"t\":{},\"piston\":{{\"m\":{},\"p\":{},\"from\":{},\"to\":{},\"d\":{}}}}}\n",
                  seconds(move.start), move.module.value, move.piston, number(move.from),
                  number(move.to), seconds(move.duration));
 }
 
-void TraceWriter::motionStarted(program::Time t, const sim::MotionStart& start) {
+void TraceWriter::motionStarted(Time t, const sim::MotionStart& start) {
   const motion::Rule& rule = *start.plan->rule;
   note(t, fmt::format("module {} turns {} about pivot {} (piston {}) towards {}",
                       start.mobile.value, motion::toString(rule.turn), start.pivot.value, rule.up,
@@ -179,16 +179,15 @@ void TraceWriter::motionStarted(program::Time t, const sim::MotionStart& start) 
       seconds(start.until));
 }
 
-void TraceWriter::motionRefused(program::Time t, ModuleId, const program::MoveRefusal& refusal) {
+void TraceWriter::motionRefused(Time t, ModuleId, const MoveRefusal& refusal) {
   note(t, "motion refused: " + refusal.text);
 }
 
-void TraceWriter::deformationRefused(program::Time t, ModuleId, std::string_view,
-                                     const std::string& text) {
+void TraceWriter::deformationRefused(Time t, ModuleId, std::string_view, const std::string& text) {
   note(t, "deformation refused: " + text);
 }
 
-void TraceWriter::turnStarted(program::Time t, const sim::QuarterTurn& turn) {
+void TraceWriter::turnStarted(Time t, const sim::QuarterTurn& turn) {
   const Vec3 centre = hinge(geometry::worldPosition(turn.pivotCell, spacing()), turn.up, turn.side);
   const bool compressing = turn.first;
   // The body turns twice as far as each connector (pivot's and mobile's turn together): the
@@ -217,7 +216,7 @@ Vec3 TraceWriter::hinge(const Vec3& pivot, int up, int side) const {
          geometry::axisVector(side) * ((d.radius() + d.connectorWidth() / 2) / std::sqrt(2.0));
 }
 
-void TraceWriter::modulePlaced(program::Time t, const world::Module& module) {
+void TraceWriter::modulePlaced(Time t, const world::Module& module) {
   const geometry::Cell& cell = module.cell;
   fmt::format_to(std::back_inserter(text_),
                  "{{\"t\":{},\"place\":{{\"m\":{},\"cell\":[{},{},{}],\"pos\":{},\"o\":{}}}}}\n",
@@ -225,23 +224,27 @@ void TraceWriter::modulePlaced(program::Time t, const world::Module& module) {
                  vec(geometry::worldPosition(cell, spacing())), module.orientation.code());
 }
 
-void TraceWriter::latchChanged(program::Time t, const world::LatchPair& pair, bool latched) {
+void TraceWriter::latchChanged(Time t, const world::LatchPair& pair, bool latched) {
   fmt::format_to(std::back_inserter(text_),
                  "{{\"t\":{},\"latch\":{{\"a\":{},\"ca\":{},\"b\":{},\"cb\":{},\"on\":{}}}}}\n",
                  seconds(t), pair.a.value, pair.connectorA, pair.b.value, pair.connectorB, latched);
 }
 
-void TraceWriter::colorChanged(program::Time t, ModuleId module, Color color) {
+void TraceWriter::colorChanged(Time t, ModuleId module, Color color) {
   fmt::format_to(std::back_inserter(text_),
                  "{{\"t\":{},\"color\":{{\"m\":{},\"rgb\":[{},{},{}]}}}}\n", seconds(t),
                  module.value, color.r, color.g, color.b);
 }
 
-void TraceWriter::note(program::Time t, const std::string& text) {
+void TraceWriter::programLog(Time t, ModuleId module, std::string_view text) {
+  note(t, fmt::format("module {}: {}", module.value, text));
+}
+
+void TraceWriter::note(Time t, const std::string& text) {
   fmt::format_to(std::back_inserter(text_), "{{\"t\":{},\"note\":{}}}\n", seconds(t), quoted(text));
 }
 
-void TraceWriter::footer(program::Time t, const std::string& summaryJson) {
+void TraceWriter::footer(Time t, const std::string& summaryJson) {
   fmt::format_to(std::back_inserter(text_), "{{\"t\":{},\"end\":{}}}\n", seconds(t), summaryJson);
 }
 

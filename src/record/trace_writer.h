@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "common/result.h"
 #include "datom/dimensions.h"
+#include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
 #include "geometry/vec3.h"
@@ -33,21 +33,21 @@ class TraceWriter final : public sim::Observer {
   void header(const world::World& world, const std::string& description,
               std::span<const std::vector<geometry::Cell>> targets = {});
   // A free-form marker the viewer shows on its timeline (e.g. "motion 3 starts").
-  void note(program::Time t, const std::string& text);
+  void note(Time t, const std::string& text);
   // The last line: totals of the run.
-  void footer(program::Time t, const std::string& summaryJson);
+  void footer(Time t, const std::string& summaryJson);
 
   // What the simulator announces.
-  void pistonMoving(program::Time t, const sim::PistonMove& move) override;
-  void latchChanged(program::Time t, const world::LatchPair& pair, bool latched) override;
-  void motionStarted(program::Time t, const sim::MotionStart& start) override;
-  void motionRefused(program::Time t, ModuleId mobile,
-                     const program::MoveRefusal& refusal) override;
-  void deformationRefused(program::Time t, ModuleId module, std::string_view reason,
+  void pistonMoving(Time t, const sim::PistonMove& move) override;
+  void latchChanged(Time t, const world::LatchPair& pair, bool latched) override;
+  void motionStarted(Time t, const sim::MotionStart& start) override;
+  void motionRefused(Time t, ModuleId mobile, const MoveRefusal& refusal) override;
+  void deformationRefused(Time t, ModuleId module, std::string_view reason,
                           const std::string& text) override;
-  void turnStarted(program::Time t, const sim::QuarterTurn& turn) override;
-  void modulePlaced(program::Time t, const world::Module& module) override;
-  void colorChanged(program::Time t, ModuleId module, Color color) override;
+  void turnStarted(Time t, const sim::QuarterTurn& turn) override;
+  void modulePlaced(Time t, const world::Module& module) override;
+  void colorChanged(Time t, ModuleId module, Color color) override;
+  void programLog(Time t, ModuleId module, std::string_view text) override;
 
   // The hinge a mobile turns about: the outer edge of the pivot's connector towards `side`
   // (world axis: -F for the first quarter turn, G for the second) when the pivot's piston `up`

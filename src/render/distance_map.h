@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "world/world.h"
 

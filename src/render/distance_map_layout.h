@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "render/distance_map.h"
 #include "world/module.h"

@@ -8,7 +8,7 @@
 
 #include <optional>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "world/world.h"
 

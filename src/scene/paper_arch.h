@@ -9,7 +9,7 @@
 // either simulator name the same modules.
 #pragma once
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "world/world.h"
 

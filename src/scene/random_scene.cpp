@@ -4,7 +4,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "common/random.h"
+#include "datomsim/random.h"
 #include "geometry/lattice.h"
 #include "world/cell_index.h"
 

@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "world/world.h"
 

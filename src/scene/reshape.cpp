@@ -5,7 +5,7 @@
 #include <set>
 #include <string>
 
-#include "common/random.h"
+#include "datomsim/random.h"
 #include "geometry/lattice.h"
 #include "scene/box.h"
 #include "scene/paper_arch.h"

@@ -10,12 +10,10 @@
 #include <map>
 #include <vector>
 
-#include "program/message.h"
+#include "datomsim/message.h"
 #include "program/module_program.h"
 
 namespace datomsim::sim {
-
-using program::Time;
 
 enum class EventKind : uint8_t {
   kStart,            // the module's program starts
@@ -37,7 +35,7 @@ struct Event {
   EventKind kind = EventKind::kStart;
   uint32_t module = 0;   // the module's index in the world
   int32_t argument = 0;  // connector (message), tag (timer), motion slot (motion events)
-  program::Message message;
+  Message message;
 };
 
 // Events grouped by time: one first-in first-out bucket per distinct time, buckets ordered by
@@ -50,7 +48,7 @@ class EventQueue {
   Time now() const { return now_; }
 
   void schedule(Time time, EventKind kind, uint32_t moduleIndex, int32_t argument,
-                const program::Message& message = {}) {
+                const Message& message = {}) {
     push(Event{time, 0, kind, moduleIndex, argument, message});
   }
   void push(Event event) {

@@ -19,7 +19,7 @@ constexpr uint8_t pistonBit(int piston) {
 }  // namespace
 
 Mechanics::Mechanics(world::World& world, EventQueue& agenda, const Announcer& announce,
-                     program::Time deformationTime)
+                     Time deformationTime)
     : world_(world),
       agenda_(agenda),
       announce_(announce),
@@ -57,7 +57,7 @@ void Mechanics::compress(uint32_t index, int ownPiston) {
   for (const int direction : geometry::directionsOfAxis(axis)) {
     if (world_.isLatched(module, direction)) setLatched(module, direction, false);
   }
-  const program::Time now = agenda_.now();
+  const Time now = agenda_.now();
   announce_(&Observer::pistonMoving, now,
             PistonMove{module.id, ownPiston, 0, 1, now, deformationTime_, PistonCause::kProgram});
   agenda_.schedule(now + deformationTime_, EventKind::kDeformationDone, index, 0);
@@ -73,7 +73,7 @@ Status Mechanics::release(uint32_t index) {
   // checks catch any other way it could happen.
   state.phase = Phase::kReleasing;
   touch(index);
-  const program::Time now = agenda_.now();
+  const Time now = agenda_.now();
   announce_(
       &Observer::pistonMoving, now,
       PistonMove{module.id, state.piston, 1, 0, now, deformationTime_, PistonCause::kProgram});
@@ -103,20 +103,20 @@ bool Mechanics::finishDeformation(uint32_t index, std::span<const int16_t> motio
   return false;  // a double deformation's switch, driven by its motion
 }
 
-void Mechanics::drive(uint32_t index, int ownPiston, program::Time duration) {
+void Mechanics::drive(uint32_t index, int ownPiston, Time duration) {
   Pistons& state = pistons_[index];
   state.piston = static_cast<int8_t>(ownPiston);
   state.phase = Phase::kDriving;
   state.compressedMask |= pistonBit(ownPiston);
   touch(index);
-  const program::Time now = agenda_.now();
+  const Time now = agenda_.now();
   announce_(
       &Observer::pistonMoving, now,
       PistonMove{world_.modules()[index].id, ownPiston, 0, 1, now, duration, PistonCause::kMotion});
 }
 
-void Mechanics::driveBack(uint32_t index, program::Time duration) {
-  const program::Time now = agenda_.now();
+void Mechanics::driveBack(uint32_t index, Time duration) {
+  const Time now = agenda_.now();
   announce_(&Observer::pistonMoving, now,
             PistonMove{world_.modules()[index].id, pistons_[index].piston, 1, 0, now, duration,
                        PistonCause::kMotion});
@@ -132,7 +132,7 @@ void Mechanics::rest(uint32_t index) {
 
 void Mechanics::beginSwitch(uint32_t index, int ownPiston) {
   const ModuleId id = world_.modules()[index].id;
-  const program::Time now = agenda_.now();
+  const Time now = agenda_.now();
   announce_(&Observer::pistonMoving, now,
             PistonMove{id, pistons_[index].piston, 1, 0, now, deformationTime_,
                        PistonCause::kDoubleDeformation});

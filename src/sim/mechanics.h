@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "sim/event_queue.h"
 #include "sim/observer.h"
 #include "world/latch_search.h"
@@ -45,7 +45,7 @@ class Mechanics {
 
   // `deformationTime`: from rest to fully compressed, and back.
   Mechanics(world::World& world, EventQueue& agenda, const Announcer& announce,
-            program::Time deformationTime);
+            Time deformationTime);
 
   const Pistons& pistons(uint32_t index) const { return pistons_[index]; }
 
@@ -63,8 +63,8 @@ class Mechanics {
 
   // What a motion does to the pistons of its pivot and mobile: compress one over the first
   // quarter turn, announce its return over the second, then put it at rest.
-  void drive(uint32_t index, int ownPiston, program::Time duration);
-  void driveBack(uint32_t index, program::Time duration);
+  void drive(uint32_t index, int ownPiston, Time duration);
+  void driveBack(uint32_t index, Time duration);
   void rest(uint32_t index);
   // A def(X, Y) module half-way through a motion releases X, then compresses Y, one deformation
   // time each: beginSwitch announces both moves; finishSwitch, when X is back at rest, latches
@@ -94,7 +94,7 @@ class Mechanics {
   world::World& world_;
   EventQueue& agenda_;
   const Announcer& announce_;
-  program::Time deformationTime_;
+  Time deformationTime_;
   std::vector<Pistons> pistons_;  // by world module index
   std::vector<uint32_t> touched_;
   std::vector<world::BrokenLatch> broken_;

@@ -10,8 +10,6 @@ namespace datomsim::sim {
 
 using geometry::Cell;
 using geometry::Orientation;
-using program::MoveRefusal;
-using program::MoveResult;
 using world::Module;
 
 namespace {
@@ -244,7 +242,7 @@ void MotionExecutor::begin(uint32_t index, const motion::Motion& motion, Claim c
   const int slot = freeSlot();
   ActiveMotion& active = motions_[slot];
   active = plan(motion, index, pivotIndex);
-  const program::Time now = agenda_.now();
+  const Time now = agenda_.now();
   active.start = now;
   active.until =
       now + 2 * times_.quarterTurn + (active.hasDoubleDeformation() ? 2 * times_.deformation : 0);
@@ -320,7 +318,7 @@ void MotionExecutor::middle(int slot) {
   const Module& pivot = world_.modules()[active.pivot];
   const Module& mobile = world_.modules()[active.mobile];
   const motion::Rule& rule = *active.plan.rule;
-  const program::Time now = agenda_.now();
+  const Time now = agenda_.now();
   announce_(
       &Observer::turnEnded, now,
       QuarterTurn{mobile.id, pivot.id, pivot.cell, rule.up, geometry::oppositeAxis(rule.front),
@@ -365,7 +363,7 @@ void MotionExecutor::resume(int slot) {
   // Step 4: the mirrored half, pistons back to rest while the mobile turns about U x G.
   mechanics_.driveBack(active.pivot, times_.quarterTurn);
   mechanics_.driveBack(active.mobile, times_.quarterTurn);
-  const program::Time now = agenda_.now();
+  const Time now = agenda_.now();
   announce_(
       &Observer::turnStarted, now,
       QuarterTurn{mobile.id, pivot.id, pivot.cell, rule.up, active.goalAxis,
@@ -378,7 +376,7 @@ Result<MotionExecutor::Arrival> MotionExecutor::end(int slot) {
   const motion::Rule& rule = *active.plan.rule;
   const ModuleId mobileId = world_.modules()[active.mobile].id;
   const Module& pivot = world_.modules()[active.pivot];
-  const program::Time now = agenda_.now();
+  const Time now = agenda_.now();
   announce_(
       &Observer::turnEnded, now,
       QuarterTurn{mobileId, pivot.id, pivot.cell, rule.up, active.goalAxis,

@@ -26,10 +26,10 @@
 #include <utility>
 #include <vector>
 
-#include "common/result.h"
+#include "datomsim/move_result.h"
+#include "datomsim/result.h"
 #include "geometry/orientation.h"
 #include "motion/motion.h"
-#include "program/move_result.h"
 #include "sim/event_queue.h"
 #include "sim/mechanics.h"
 #include "sim/observer.h"
@@ -46,9 +46,9 @@ struct ActiveMotion {
   Claim claim;          // what it holds
   uint32_t mobile = 0;  // module indices
   uint32_t pivot = 0;
-  program::Time start = 0;
-  program::Time until = 0;  // when it ends
-  int goalAxis = -1;        // G: -R, R or F
+  Time start = 0;
+  Time until = 0;     // when it ends
+  int goalAxis = -1;  // G: -R, R or F
   // Own connectors of the latched pair before and after the middle.
   int pivotOld = 0, mobileOld = 0, pivotNew = 0, mobileNew = 0;
   bool switched = false;  // the latch has moved to the new pair
@@ -62,8 +62,8 @@ struct ActiveMotion {
 };
 
 struct MotionTimes {
-  program::Time quarterTurn = 0;  // one of the two quarter turns
-  program::Time deformation = 0;  // a piston from rest to compressed, or back
+  Time quarterTurn = 0;  // one of the two quarter turns
+  Time deformation = 0;  // a piston from rest to compressed, or back
 };
 
 struct MotionLimits {
@@ -78,7 +78,7 @@ class MotionExecutor {
                  MotionLimits limits);
 
   // A program asks for a motion of its module (by index).
-  program::MoveResult request(uint32_t mobileIndex, const motion::Motion& motion);
+  MoveResult request(uint32_t mobileIndex, const motion::Motion& motion);
   // The motion events of the motion in `slot`.
   void middle(int slot);
   void switchPistons(int slot);
@@ -87,7 +87,7 @@ class MotionExecutor {
   struct Arrival {
     uint32_t mobile = 0;
     // Queued requests judged now and refused: their programs hear of it.
-    std::vector<std::pair<uint32_t, program::MoveRefusal>> refused;
+    std::vector<std::pair<uint32_t, MoveRefusal>> refused;
   };
   // The arrival, or the reason the mobile cannot arrive (an invariant violation).
   Result<Arrival> end(int slot);
@@ -120,11 +120,11 @@ class MotionExecutor {
 
  private:
   // Judges a request on the world as it is now and starts it, or says why not.
-  program::MoveResult tryStart(uint32_t mobileIndex, const motion::Motion& request);
+  MoveResult tryStart(uint32_t mobileIndex, const motion::Motion& request);
   void begin(uint32_t mobileIndex, const motion::Motion& motion, Claim claim);
   // The geometry of the two quarter turns, worked out when the motion starts.
   ActiveMotion plan(const motion::Motion& motion, uint32_t mobileIndex, uint32_t pivotIndex) const;
-  program::MoveRefusal refuse(uint32_t mobileIndex, program::MoveRefusal refusal) const;
+  MoveRefusal refuse(uint32_t mobileIndex, MoveRefusal refusal) const;
   int freeSlot();
 
   world::World& world_;

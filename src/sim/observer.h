@@ -12,12 +12,12 @@
 #include <string_view>
 #include <vector>
 
-#include "common/module_values.h"
+#include "datomsim/message.h"
+#include "datomsim/move_result.h"
+#include "datomsim/values.h"
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
 #include "motion/motion_values.h"
-#include "program/message.h"
-#include "program/move_result.h"
 #include "sim/event_queue.h"
 #include "world/module.h"
 
@@ -38,8 +38,8 @@ struct PistonMove {
   int piston = 0;  // the module's own piston number
   double from = 0;
   double to = 0;
-  program::Time start = 0;
-  program::Time duration = 0;
+  Time start = 0;
+  Time duration = 0;
   PistonCause cause = PistonCause::kProgram;
 };
 
@@ -49,7 +49,7 @@ struct MotionStart {
   ModuleId mobile;
   ModuleId pivot;
   const motion::Motion* plan = nullptr;
-  program::Time until = 0;
+  Time until = 0;
 };
 
 // One quarter turn of a mobile about the hinge it shares with its pivot (docs/simulation.md). The
@@ -64,7 +64,7 @@ struct QuarterTurn {
   int side = 0;  // -F for the first quarter turn, the goal's axis for the second
   int axis = 0;  // a world axis
   double degrees = 90;
-  program::Time duration = 0;
+  Time duration = 0;
   bool first = true;  // the first quarter turn (pistons compressing) or the second (releasing)
 };
 
@@ -83,33 +83,33 @@ class Observer {
   virtual ~Observer() = default;
 
   // An event is taken from the agenda, before it acts.
-  virtual void eventStarted(program::Time /*t*/, EventKind /*kind*/, ModuleId /*module*/) {}
-  virtual void messageSent(program::Time /*t*/, ModuleId /*from*/, ModuleId /*to*/,
-                           const program::Message& /*message*/, program::Time /*arrival*/) {}
-  virtual void messageReceived(program::Time /*t*/, ModuleId /*to*/, int /*ownConnector*/,
-                               const program::Message& /*message*/) {}
-  virtual void pistonMoving(program::Time /*t*/, const PistonMove& /*move*/) {}
+  virtual void eventStarted(Time /*t*/, EventKind /*kind*/, ModuleId /*module*/) {}
+  virtual void messageSent(Time /*t*/, ModuleId /*from*/, ModuleId /*to*/,
+                           const Message& /*message*/, Time /*arrival*/) {}
+  virtual void messageReceived(Time /*t*/, ModuleId /*to*/, int /*ownConnector*/,
+                               const Message& /*message*/) {}
+  virtual void pistonMoving(Time /*t*/, const PistonMove& /*move*/) {}
   // A compression or release a program asked for has reached its end.
-  virtual void pistonCompressed(program::Time /*t*/, ModuleId /*module*/, int /*piston*/) {}
-  virtual void pistonReleased(program::Time /*t*/, ModuleId /*module*/, int /*piston*/) {}
-  virtual void latchChanged(program::Time /*t*/, const world::LatchPair& /*pair*/,
-                            bool /*latched*/) {}
+  virtual void pistonCompressed(Time /*t*/, ModuleId /*module*/, int /*piston*/) {}
+  virtual void pistonReleased(Time /*t*/, ModuleId /*module*/, int /*piston*/) {}
+  virtual void latchChanged(Time /*t*/, const world::LatchPair& /*pair*/, bool /*latched*/) {}
   // A program asked for a motion and it waits behind the limit on concurrent motions.
-  virtual void motionQueued(program::Time /*t*/, ModuleId /*mobile*/) {}
+  virtual void motionQueued(Time /*t*/, ModuleId /*mobile*/) {}
   // A motion request was refused, at once or when its turn came in the queue.
-  virtual void motionRefused(program::Time /*t*/, ModuleId /*mobile*/,
-                             const program::MoveRefusal& /*refusal*/) {}
+  virtual void motionRefused(Time /*t*/, ModuleId /*mobile*/, const MoveRefusal& /*refusal*/) {}
   // A program's compression or release was refused; `reason` is a short name
   // ("piston-busy", "would-disconnect", "held-by-motion", "nothing-compressed").
-  virtual void deformationRefused(program::Time /*t*/, ModuleId /*module*/,
-                                  std::string_view /*reason*/, const std::string& /*text*/) {}
-  virtual void motionStarted(program::Time /*t*/, const MotionStart& /*start*/) {}
-  virtual void turnStarted(program::Time /*t*/, const QuarterTurn& /*turn*/) {}
-  virtual void turnEnded(program::Time /*t*/, const QuarterTurn& /*turn*/) {}
+  virtual void deformationRefused(Time /*t*/, ModuleId /*module*/, std::string_view /*reason*/,
+                                  const std::string& /*text*/) {}
+  virtual void motionStarted(Time /*t*/, const MotionStart& /*start*/) {}
+  virtual void turnStarted(Time /*t*/, const QuarterTurn& /*turn*/) {}
+  virtual void turnEnded(Time /*t*/, const QuarterTurn& /*turn*/) {}
   // A module takes a cell and an orientation (a mobile arriving).
-  virtual void modulePlaced(program::Time /*t*/, const world::Module& /*module*/) {}
-  virtual void motionEnded(program::Time /*t*/, const MotionEnd& /*end*/) {}
-  virtual void colorChanged(program::Time /*t*/, ModuleId /*module*/, Color /*color*/) {}
+  virtual void modulePlaced(Time /*t*/, const world::Module& /*module*/) {}
+  virtual void motionEnded(Time /*t*/, const MotionEnd& /*end*/) {}
+  virtual void colorChanged(Time /*t*/, ModuleId /*module*/, Color /*color*/) {}
+  // A program wrote a line for the trace (ModuleContext::log).
+  virtual void programLog(Time /*t*/, ModuleId /*module*/, std::string_view /*text*/) {}
 };
 
 // The subscribers of one simulation; what its parts announce through.

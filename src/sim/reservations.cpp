@@ -8,10 +8,8 @@
 
 namespace datomsim::sim {
 
-using program::MoveRefusal;
-
-std::string untilText(program::Time until) {
-  return fmt::format("until {:g} s", double(until) / program::kSecond);
+std::string untilText(Time until) {
+  return fmt::format("until {:g} s", double(until) / kSecond);
 }
 
 Claim claimOf(const world::World& world, const motion::Motion& motion, uint32_t mobileIndex) {

@@ -20,8 +20,8 @@
 #include <utility>
 #include <vector>
 
+#include "datomsim/move_result.h"
 #include "motion/motion_values.h"
-#include "program/move_result.h"
 #include "world/world.h"
 
 namespace datomsim::sim {
@@ -48,12 +48,12 @@ class Reservations {
   struct Holder {
     int slot = -1;
     ModuleId mobile;
-    program::Time until = 0;
+    Time until = 0;
   };
 
   // The first thing the claim needs that a motion in progress holds, as a refusal; nullopt
   // when all is free. Cells first, then the pivot, then the blocking modules.
-  std::optional<program::MoveRefusal> conflict(const world::World& world, const Claim& claim) const;
+  std::optional<MoveRefusal> conflict(const world::World& world, const Claim& claim) const;
   // What holds a module as the mobile or pivot of a motion, or as a blocking module.
   std::optional<Holder> holderOf(uint32_t module) const;
   // The same with the role: "mobile", "pivot" or "blocking module".
@@ -80,6 +80,6 @@ class Reservations {
 };
 
 // "until 2.35 s".
-std::string untilText(program::Time until);
+std::string untilText(Time until);
 
 }  // namespace datomsim::sim

@@ -12,7 +12,6 @@ namespace datomsim::sim {
 
 using geometry::Cell;
 using geometry::Orientation;
-using program::Message;
 using world::Module;
 
 const char* toString(EventKind kind) {
@@ -39,7 +38,7 @@ const char* toString(EventKind kind) {
 
 std::string Violation::describe() const {
   return fmt::format("invariant violated at t = {:.6f} s, event #{} ({}, module {}): {}",
-                     double(time) / program::kSecond, sequence, toString(kind), module.value, what);
+                     double(time) / kSecond, sequence, toString(kind), module.value, what);
 }
 
 // The window a program has on the simulation: every call goes through the part that owns what
@@ -51,7 +50,7 @@ class Simulator::Context final : public program::ModuleContext {
   ModuleId id() const override { return module().id; }
   Cell cell() const override { return module().cell; }
   Orientation orientation() const override { return module().orientation; }
-  program::Time now() const override { return simulator_.agenda_.now(); }
+  Time now() const override { return simulator_.agenda_.now(); }
   std::optional<bool> occupied(const Cell& cell) const override {
     const geometry::Vec3 gap = geometry::worldOffset(cell - module().cell, 1.0);
     if (geometry::dot(gap, gap) > 4.0 + 1e-9) return std::nullopt;  // beyond two steps
@@ -73,17 +72,19 @@ class Simulator::Context final : public program::ModuleContext {
                                simulator_.options_.rules);
   }
   int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals) const override;
-  program::MoveResult move(const motion::Motion& motion) override {
+  MoveResult move(const motion::Motion& motion) override {
     return simulator_.motions_.request(index_, motion);
   }
-  void setTimer(program::Time delay, int tag) override {
-    simulator_.agenda_.schedule(now() + std::max<program::Time>(0, delay), EventKind::kTimer,
-                                index_, tag);
+  void setTimer(Time delay, int tag) override {
+    simulator_.agenda_.schedule(now() + std::max<Time>(0, delay), EventKind::kTimer, index_, tag);
   }
   Random& random() override { return simulator_.randoms_[index_]; }
   void setColor(Color color) override {
     const Status painted = simulator_.world_.setColor(id(), color);
     if (painted.ok()) simulator_.announce_(&Observer::colorChanged, now(), id(), color);
+  }
+  void log(std::string_view text) override {
+    simulator_.announce_(&Observer::programLog, now(), id(), text);
   }
 
  private:
@@ -122,6 +123,7 @@ Simulator::Simulator(world::World world, const motion::RuleTable& table, Simulat
                  {options.messageDelay, options.messageJitter}, options.seed),
       programs_(world_.size()) {
   announce_.subscribe(&statistics_);
+  announce_.subscribe(&latchChanges_);
   // Stream 0 is the message delays (Transport); module streams are numbered by id, from 1.
   randoms_.reserve(world_.size());
   for (const Module& module : world_.modules()) {
@@ -167,7 +169,7 @@ void Simulator::subscribe(Observer* observer) {
   announce_.subscribe(observer);
 }
 
-Status Simulator::run(program::Time until) {
+Status Simulator::run(Time until) {
   const auto wallStart = std::chrono::steady_clock::now();
   // The run loop: take the earliest event, let it act, check the invariants.
   while (!violation_ && !agenda_.empty() && agenda_.top().time <= until) {
@@ -177,6 +179,7 @@ Status Simulator::run(program::Time until) {
     placed_.clear();
     announce_(&Observer::eventStarted, event.time, event.kind, world_.modules()[event.module].id);
     dispatch(event);
+    if (!violation_) tellLatchChanges();
     if (!violation_) {
       if (auto violation = findViolation(world_, mechanics_, motions_, placed_)) {
         fail(std::move(*violation));
@@ -234,6 +237,22 @@ void Simulator::dispatch(const Event& event) {
       break;
     }
   }
+}
+
+void Simulator::tellLatchChanges() {
+  // A program's answer may change latches again (a motion starting lets go of some): those are
+  // told too, in the order they happened.
+  for (size_t i = 0; i < latchChanges_.changes.size(); ++i) {
+    const auto [pair, latched] = latchChanges_.changes[i];
+    for (const auto& [module, connector] :
+         {std::pair{pair.a, pair.connectorA}, std::pair{pair.b, pair.connectorB}}) {
+      const uint32_t index = indexOf(module);
+      if (!programs_[index]) continue;
+      Context context(*this, index);
+      programs_[index]->onLatchChanged(context, connector, latched);
+    }
+  }
+  latchChanges_.changes.clear();
 }
 
 Status Simulator::compress(uint32_t index, int ownPiston) {

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "common/random.h"
-#include "common/result.h"
+#include "datomsim/random.h"
+#include "datomsim/result.h"
 #include "motion/motion.h"
 #include "motion/rule_table.h"
 #include "program/module_program.h"
@@ -38,12 +38,12 @@ struct SimulationOptions {
   uint64_t seed = 1;
   // A message takes messageDelay plus a uniform extra in [0, messageJitter], drawn from the
   // sender's delay stream.
-  program::Time messageDelay = 10 * program::kMillisecond;
-  program::Time messageJitter = 0;
+  Time messageDelay = 10 * kMillisecond;
+  Time messageJitter = 0;
   // From rest to fully compressed, and back.
-  program::Time deformationTime = 500 * program::kMillisecond;
+  Time deformationTime = 500 * kMillisecond;
   // One of the two quarter turns of a motion.
-  program::Time quarterTurnTime = 1000 * program::kMillisecond;
+  Time quarterTurnTime = 1000 * kMillisecond;
   motion::RuleOptions rules;
   // Motions in flight at once; requests beyond wait in request order. 0: no limit.
   int maxMotions = 0;
@@ -56,7 +56,7 @@ struct SimulationOptions {
 
 // Why a run stopped early.
 struct Violation {
-  program::Time time = 0;
+  Time time = 0;
   uint64_t sequence = 0;
   EventKind kind = EventKind::kStart;
   ModuleId module;
@@ -87,11 +87,13 @@ class Simulator {
 
   // Runs events until none remains or the next is after `until`. Refuses when a violation stops
   // the run; the error is Violation::describe(), and violation() has the details.
-  [[nodiscard]] Status run(program::Time until = INT64_MAX);
+  [[nodiscard]] Status run(Time until = INT64_MAX);
 
   const world::World& world() const { return world_; }
   const Statistics& statistics() const { return statistics_.statistics(); }
-  program::Time now() const { return agenda_.now(); }
+  Time now() const { return agenda_.now(); }
+  // Whether events remain (a run stopped at its `until`).
+  bool pending() const { return !agenda_.empty(); }
   const std::optional<Violation>& violation() const { return violation_; }
   const SimulationOptions& options() const { return options_; }
 
@@ -106,6 +108,8 @@ class Simulator {
   // A program's deformations, through the checks of every part.
   Status compress(uint32_t index, int ownPiston);
   Status release(uint32_t index);
+  // Tells the programs of both ends of every latch made or broken during the current event.
+  void tellLatchChanges();
   // Stops the run with a violation naming the current event.
   void fail(std::string what);
   uint32_t indexOf(ModuleId id) const;
@@ -116,6 +120,13 @@ class Simulator {
   EventQueue agenda_;
   Announcer announce_;
   StatisticsRecorder statistics_;
+  // The latches made or broken during the current event, for the programs at their ends.
+  struct LatchChanges final : Observer {
+    void latchChanged(Time /*t*/, const world::LatchPair& pair, bool latched) override {
+      changes.push_back({pair, latched});
+    }
+    std::vector<std::pair<world::LatchPair, bool>> changes;
+  } latchChanges_;
   Mechanics mechanics_;
   MotionExecutor motions_;
   Transport transport_;

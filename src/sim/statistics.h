@@ -24,20 +24,20 @@ struct Statistics {
   std::map<std::string, uint64_t, std::less<>> messagesByType;
   uint64_t motions = 0;       // completed
   uint64_t deformations = 0;  // completed compressions and releases a program asked for
-  program::Time simulatedTime = 0;
+  Time simulatedTime = 0;
   double wallSeconds = 0;
 
   // Motions in flight: the most at once, and the motion time summed over all motions.
   int maxConcurrentMotions = 0;
-  program::Time motionTime = 0;
-  program::Time firstMotionStart = -1;
-  program::Time lastMotionEnd = 0;  // the makespan: from the run's start to the last arrival
-  // Refused requests by reason: a motion's (program::toString(MoveRefusal::Reason)), or a
+  Time motionTime = 0;
+  Time firstMotionStart = -1;
+  Time lastMotionEnd = 0;  // the makespan: from the run's start to the last arrival
+  // Refused requests by reason: a motion's (toString(MoveRefusal::Reason)), or a
   // deformation's, prefixed "deformation-".
   std::map<std::string, uint64_t, std::less<>> refusalsByReason;
   // Time modules spent waiting for what other motions held: from a request queued or refused
   // for a reservation (cell-reserved, module-busy) to that module's next start.
-  program::Time reservationWait = 0;
+  Time reservationWait = 0;
 
   uint64_t events() const {
     uint64_t total = 0;
@@ -51,7 +51,7 @@ struct Statistics {
   }
   // The mean number of motions in flight between the first start and the last arrival.
   double meanConcurrentMotions() const {
-    const program::Time span = lastMotionEnd - firstMotionStart;
+    const Time span = lastMotionEnd - firstMotionStart;
     return firstMotionStart < 0 || span <= 0 ? 0.0 : double(motionTime) / double(span);
   }
 };
@@ -63,7 +63,7 @@ class StatisticsRecorder final : public Observer {
   StatisticsRecorder(const StatisticsRecorder&) = delete;
   StatisticsRecorder& operator=(const StatisticsRecorder&) = delete;
 
-  void eventStarted(program::Time t, EventKind kind, ModuleId) override {
+  void eventStarted(Time t, EventKind kind, ModuleId) override {
     ++statistics_.eventsByKind[static_cast<size_t>(kind)];
     // The motions in flight at a time are counted once all its events are done: a motion that
     // ends at T and one that starts at T are never in flight together.
@@ -72,25 +72,23 @@ class StatisticsRecorder final : public Observer {
       countedAt_ = t;
     }
   }
-  void messageReceived(program::Time, ModuleId, int, const program::Message& message) override {
+  void messageReceived(Time, ModuleId, int, const Message& message) override {
     ++counterOf(message.typeName());
   }
-  void pistonCompressed(program::Time, ModuleId, int) override { ++statistics_.deformations; }
-  void pistonReleased(program::Time, ModuleId, int) override { ++statistics_.deformations; }
-  void motionQueued(program::Time t, ModuleId mobile) override { startWaiting(t, mobile); }
-  void motionRefused(program::Time t, ModuleId mobile,
-                     const program::MoveRefusal& refusal) override {
-    ++statistics_.refusalsByReason[std::string(program::toString(refusal.reason))];
-    if (refusal.reason == program::MoveRefusal::Reason::kCellReserved ||
-        refusal.reason == program::MoveRefusal::Reason::kModuleBusy) {
+  void pistonCompressed(Time, ModuleId, int) override { ++statistics_.deformations; }
+  void pistonReleased(Time, ModuleId, int) override { ++statistics_.deformations; }
+  void motionQueued(Time t, ModuleId mobile) override { startWaiting(t, mobile); }
+  void motionRefused(Time t, ModuleId mobile, const MoveRefusal& refusal) override {
+    ++statistics_.refusalsByReason[std::string(toString(refusal.reason))];
+    if (refusal.reason == MoveRefusal::Reason::kCellReserved ||
+        refusal.reason == MoveRefusal::Reason::kModuleBusy) {
       startWaiting(t, mobile);
     }
   }
-  void deformationRefused(program::Time, ModuleId, std::string_view reason,
-                          const std::string&) override {
+  void deformationRefused(Time, ModuleId, std::string_view reason, const std::string&) override {
     ++statistics_.refusalsByReason["deformation-" + std::string(reason)];
   }
-  void motionStarted(program::Time t, const MotionStart& start) override {
+  void motionStarted(Time t, const MotionStart& start) override {
     if (statistics_.firstMotionStart < 0) statistics_.firstMotionStart = t;
     statistics_.motionTime += start.until - t;
     ++inFlight_;
@@ -100,14 +98,14 @@ class StatisticsRecorder final : public Observer {
       waitingSince_.erase(waiting);
     }
   }
-  void motionEnded(program::Time t, const MotionEnd&) override {
+  void motionEnded(Time t, const MotionEnd&) override {
     ++statistics_.motions;
     --inFlight_;
     statistics_.lastMotionEnd = t;
   }
 
   // A run of the event loop is over at simulated time `now`, after `wallSeconds`.
-  void runEnded(program::Time now, double wallSeconds) {
+  void runEnded(Time now, double wallSeconds) {
     settleConcurrency();
     statistics_.simulatedTime = now;
     statistics_.wallSeconds += wallSeconds;
@@ -127,9 +125,7 @@ class StatisticsRecorder final : public Observer {
     return counter;
   }
 
-  void startWaiting(program::Time t, ModuleId mobile) {
-    waitingSince_.try_emplace(mobile.value, t);
-  }
+  void startWaiting(Time t, ModuleId mobile) { waitingSince_.try_emplace(mobile.value, t); }
   void settleConcurrency() {
     statistics_.maxConcurrentMotions = std::max(statistics_.maxConcurrentMotions, inFlight_);
   }
@@ -137,8 +133,8 @@ class StatisticsRecorder final : public Observer {
   Statistics statistics_;
   std::vector<std::pair<const char*, uint64_t*>> counters_;
   int inFlight_ = 0;
-  program::Time countedAt_ = 0;
-  std::unordered_map<uint32_t, program::Time> waitingSince_;  // by module id
+  Time countedAt_ = 0;
+  std::unordered_map<uint32_t, Time> waitingSince_;  // by module id
 };
 
 }  // namespace datomsim::sim

@@ -17,7 +17,7 @@ Transport::Transport(const world::World& world, const MotionExecutor& motions, E
       times_(times),
       random_(Random::stream(seed, 0)) {}
 
-Status Transport::send(uint32_t index, int ownConnector, const program::Message& message) {
+Status Transport::send(uint32_t index, int ownConnector, const Message& message) {
   const Module& module = world_.modules()[index];
   if (ownConnector < 0 || ownConnector >= geometry::kDirectionCount) {
     return Error{fmt::format("module {}: no connector {}", module.id.value, ownConnector)};
@@ -43,9 +43,9 @@ Status Transport::send(uint32_t index, int ownConnector, const program::Message&
     partner = *world_.indexOf(neighbour->id);
     partnerConnector = neighbour->orientation.ownConnector(geometry::oppositeDirection(direction));
   }
-  program::Time delay = times_.delay;
+  Time delay = times_.delay;
   if (times_.jitter > 0) delay += random_.between(0, times_.jitter);
-  const program::Time arrival = agenda_.now() + delay;
+  const Time arrival = agenda_.now() + delay;
   announce_(&Observer::messageSent, agenda_.now(), module.id, world_.modules()[partner].id, message,
             arrival);
   agenda_.schedule(arrival, EventKind::kMessage, partner, partnerConnector, message);

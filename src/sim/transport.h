@@ -13,9 +13,9 @@
 
 #include <cstdint>
 
-#include "common/random.h"
-#include "common/result.h"
-#include "program/message.h"
+#include "datomsim/message.h"
+#include "datomsim/random.h"
+#include "datomsim/result.h"
 #include "sim/event_queue.h"
 #include "sim/motion_executor.h"
 #include "sim/observer.h"
@@ -24,8 +24,8 @@
 namespace datomsim::sim {
 
 struct MessageTimes {
-  program::Time delay = 0;
-  program::Time jitter = 0;
+  Time delay = 0;
+  Time jitter = 0;
 };
 
 class Transport {
@@ -33,7 +33,7 @@ class Transport {
   Transport(const world::World& world, const MotionExecutor& motions, EventQueue& agenda,
             const Announcer& announce, MessageTimes times, uint64_t seed);
 
-  Status send(uint32_t index, int ownConnector, const program::Message& message);
+  Status send(uint32_t index, int ownConnector, const Message& message);
   // A message event is being handled.
   void received(const Event& event) const;
 

@@ -11,7 +11,7 @@
 #include <array>
 #include <vector>
 
-#include "common/module_values.h"
+#include "datomsim/values.h"
 #include "geometry/vec3.h"
 
 namespace datomsim::target::csg {

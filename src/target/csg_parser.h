@@ -16,7 +16,7 @@
 
 #include <string_view>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "target/csg.h"
 
 namespace datomsim::target::csg {

@@ -17,8 +17,8 @@
 #include <string_view>
 #include <vector>
 
-#include "common/module_values.h"
-#include "common/result.h"
+#include "datomsim/result.h"
+#include "datomsim/values.h"
 #include "geometry/cell.h"
 #include "geometry/vec3.h"
 #include "target/csg.h"

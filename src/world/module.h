@@ -8,7 +8,7 @@
 
 #include <cstdint>
 
-#include "common/module_values.h"
+#include "datomsim/values.h"
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
 

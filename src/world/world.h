@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "common/result.h"
+#include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "world/bounds.h"
 #include "world/cell_index.h"

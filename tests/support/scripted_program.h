@@ -12,26 +12,26 @@ namespace datomsim::testing {
 // What a scripted module does on each hook; any left out does nothing.
 struct Script {
   std::function<void(program::ModuleContext&)> start = [](program::ModuleContext&) {};
-  std::function<void(program::ModuleContext&, int, const program::Message&)> message =
-      [](program::ModuleContext&, int, const program::Message&) {};
+  std::function<void(program::ModuleContext&, int, const Message&)> message =
+      [](program::ModuleContext&, int, const Message&) {};
   std::function<void(program::ModuleContext&, int)> timer = [](program::ModuleContext&, int) {};
   std::function<void(program::ModuleContext&)> deformed = [](program::ModuleContext&) {};
   std::function<void(program::ModuleContext&)> moved = [](program::ModuleContext&) {};
-  std::function<void(program::ModuleContext&, const program::MoveRefusal&)> refused =
-      [](program::ModuleContext&, const program::MoveRefusal&) {};
+  std::function<void(program::ModuleContext&, const MoveRefusal&)> refused =
+      [](program::ModuleContext&, const MoveRefusal&) {};
 };
 
 class ScriptedProgram : public program::ModuleProgram {
  public:
   explicit ScriptedProgram(const Script* script) : script_(script) {}
   void onStart(program::ModuleContext& c) override { script_->start(c); }
-  void onMessage(program::ModuleContext& c, int connector, const program::Message& m) override {
+  void onMessage(program::ModuleContext& c, int connector, const Message& m) override {
     script_->message(c, connector, m);
   }
   void onTimer(program::ModuleContext& c, int tag) override { script_->timer(c, tag); }
   void onDeformationDone(program::ModuleContext& c) override { script_->deformed(c); }
   void onMotionDone(program::ModuleContext& c) override { script_->moved(c); }
-  void onMotionRefused(program::ModuleContext& c, const program::MoveRefusal& r) override {
+  void onMotionRefused(program::ModuleContext& c, const MoveRefusal& r) override {
     script_->refused(c, r);
   }
 

@@ -87,7 +87,7 @@ TEST(Reconfigure, ATargetCellNoModuleCanReachStopsTheRunWithTheCell) {
   }
   target.push_back({2, 2, 3});
   auto request = reconfigure(target);
-  request.reshape.stall = 60 * program::kSecond;
+  request.reshape.stall = 60 * kSecond;
   const auto run = experiment::runProgram(std::move(world), table(), request);
   ASSERT_TRUE(run.ok()) << run.error();
   ASSERT_TRUE(run->reshape.has_value());

@@ -99,8 +99,7 @@ TEST(Walkers, OneMotionAtATimeIsTheSequentialBaseline) {
   EXPECT_EQ(sequential.statistics.maxConcurrentMotions, 1);
   expectWalked(sequential);
   // Motions of 2 s each, one after the other.
-  EXPECT_GE(sequential.statistics.lastMotionEnd,
-            program::Time(sequential.statistics.motions) * 2 * program::kSecond);
+  EXPECT_GE(sequential.statistics.lastMotionEnd, Time(sequential.statistics.motions) * 2 * kSecond);
   EXPECT_LT(concurrent.statistics.lastMotionEnd * 4, sequential.statistics.lastMotionEnd);
 }
 

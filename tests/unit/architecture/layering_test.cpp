@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
+#include <regex>
 
 #include "support/temporary_directory.h"
 
@@ -44,6 +46,35 @@ TEST(Layering, TheTableNamesTheLayersAndWhatTheyUse) {
 TEST(Layering, EveryIncludeOfSrcObeysTheTable) {
   const auto breaches = layeringBreaches(kSource / "src", projectLayers());
   EXPECT_TRUE(breaches.empty()) << joined(breaches);
+}
+
+// The public API stands alone: a researcher's project compiles it with nothing but the standard
+// library, so its headers include each other and standard headers only.
+TEST(Layering, ThePublicHeadersIncludeOnlyEachOtherAndTheStandardLibrary) {
+  const std::filesystem::path api = kSource / "include" / "datomsim";
+  const std::regex quoted(R"re(^\s*#\s*include\s*"([^"]+)")re");
+  const std::regex angled(R"re(^\s*#\s*include\s*<([^>]+)>)re");
+  size_t headers = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(api)) {
+    ++headers;
+    std::ifstream file(entry.path());
+    std::string line;
+    for (int number = 1; std::getline(file, line); ++number) {
+      std::smatch match;
+      const std::string where = entry.path().filename().string() + ":" + std::to_string(number);
+      if (std::regex_search(line, match, quoted)) {
+        const std::string path = match[1];
+        EXPECT_TRUE(path.rfind("datomsim/", 0) == 0 &&
+                    std::filesystem::exists(api.parent_path() / path))
+            << where << " includes \"" << path << "\", which is not a public header";
+      } else if (std::regex_search(line, match, angled)) {
+        const std::string path = match[1];
+        EXPECT_EQ(path.find('/'), std::string::npos)
+            << where << " includes <" << path << ">, which is not a standard header";
+      }
+    }
+  }
+  EXPECT_GE(headers, 9u);
 }
 
 // The check itself, on a small tree: it must catch what it is there to catch.

@@ -1,4 +1,4 @@
-#include "common/random.h"
+#include "datomsim/random.h"
 
 #include <gtest/gtest.h>
 

@@ -27,8 +27,8 @@ std::string smallTrace(const std::string& description = "two modules") {
   record::TraceWriter trace;
   trace.header(twoModules(), description);
   trace.note(0, "a <note> with </script> inside");
-  trace.pistonMoving(0, {ModuleId{1}, 0, 0, 1, 0, program::kSecond / 2});
-  trace.latchChanged(program::kSecond, {ModuleId{1}, 0, ModuleId{2}, 6}, false);
+  trace.pistonMoving(0, {ModuleId{1}, 0, 0, 1, 0, kSecond / 2});
+  trace.latchChanged(kSecond, {ModuleId{1}, 0, ModuleId{2}, 6}, false);
   return trace.text();
 }
 
@@ -148,15 +148,17 @@ TEST(Overlay, IsWrittenFromCellsAsReachWritesIt) {
   EXPECT_TRUE(checkOverlay(json, "x").ok());
 }
 
-TEST(ViewerBundle, IsFoundNextToTheBinaryThenInShare) {
+TEST(ViewerBundle, IsFoundNextToTheBinaryThenInShareThenInABuildTreesBin) {
   TemporaryDirectory directory;
   const auto bin = directory.path() / "bin";
   std::filesystem::create_directories(bin);
   std::filesystem::create_directories(directory.path() / "share" / "datomsim");
   const auto candidates = viewerBundleCandidates(bin);
-  ASSERT_EQ(candidates.size(), 2u);
+  ASSERT_EQ(candidates.size(), 3u);
   EXPECT_EQ(candidates[0], bin / "viewer.bundle.js");
   EXPECT_EQ(candidates[1], directory.path() / "share" / "datomsim" / "viewer.bundle.js");
+  // A shared library in a build tree's lib/ finds the bundle in the bin/ beside it.
+  EXPECT_EQ(viewerBundleCandidates(directory.path() / "lib")[2], bin / "viewer.bundle.js");
 
   const auto missing = loadViewerBundle("", bin);
   ASSERT_FALSE(missing.ok());

@@ -17,8 +17,6 @@ namespace {
 
 using geometry::Cell;
 using program::ModuleContext;
-using program::MoveRefusal;
-using program::MoveResult;
 using testing::Script;
 using testing::scripts;
 using testing::WorldBuilder;
@@ -48,12 +46,12 @@ std::vector<motion::Motion> freeMotions(const world::World& world, const Cell& c
 
 // Records the starts and refusals the simulator announces.
 struct Recorder : Observer {
-  std::map<uint32_t, std::vector<program::Time>> starts;
+  std::map<uint32_t, std::vector<Time>> starts;
   std::vector<std::pair<uint32_t, MoveRefusal>> refusals;
-  void motionStarted(program::Time t, const MotionStart& start) override {
+  void motionStarted(Time t, const MotionStart& start) override {
     starts[start.mobile.value].push_back(t);
   }
-  void motionRefused(program::Time, ModuleId mobile, const MoveRefusal& refusal) override {
+  void motionRefused(Time, ModuleId mobile, const MoveRefusal& refusal) override {
     refusals.push_back({mobile.value, refusal});
   }
 };
@@ -66,7 +64,7 @@ struct Duel {
   world::World world;
   motion::Motion first, second;
   uint32_t firstId = 37, secondId = 38;  // the two movers
-  program::Time secondAt = 500 * program::kMillisecond;
+  Time secondAt = 500 * kMillisecond;
   SimulationOptions options;
   Recorder recorder;
   std::optional<MoveResult> secondResult;
@@ -115,7 +113,7 @@ TEST(Concurrency, TwoMotionsToOneCellTheSecondIsRefusedNamingTheFirst) {
   const MoveRefusal& refusal = duel.secondResult->refusal();
   EXPECT_EQ(refusal.reason, MoveRefusal::Reason::kCellReserved);
   EXPECT_EQ(refusal.holder, ModuleId{37});
-  EXPECT_EQ(refusal.until, 2 * program::kSecond);
+  EXPECT_EQ(refusal.until, 2 * kSecond);
   EXPECT_NE(refusal.text.find("is reserved by the motion of module 37 (until 2 s)"),
             std::string::npos)
       << refusal.text;
@@ -194,11 +192,11 @@ TEST(Concurrency, BeyondTheLimitARequestWaitsItsTurnInTheQueue) {
   ASSERT_TRUE(duel.secondResult->ok());
   EXPECT_EQ(duel.secondResult->state(), MoveResult::State::kQueued);
   // It starts when the first arrives, 2 s after its start; it asked at 0.5 s.
-  EXPECT_EQ(duel.recorder.starts.at(38), std::vector<program::Time>{2 * program::kSecond});
+  EXPECT_EQ(duel.recorder.starts.at(38), std::vector<Time>{2 * kSecond});
   EXPECT_EQ(duel.statistics.maxConcurrentMotions, 1);
   EXPECT_EQ(duel.statistics.motions, 2u);
-  EXPECT_EQ(duel.statistics.reservationWait, 1500 * program::kMillisecond);
-  EXPECT_EQ(duel.statistics.lastMotionEnd, 4 * program::kSecond);
+  EXPECT_EQ(duel.statistics.reservationWait, 1500 * kMillisecond);
+  EXPECT_EQ(duel.statistics.lastMotionEnd, 4 * kSecond);
 }
 
 TEST(Concurrency, AMotionThatStartsWhenAnotherEndsIsNotCountedWithIt) {
@@ -208,10 +206,10 @@ TEST(Concurrency, AMotionThatStartsWhenAnotherEndsIsNotCountedWithIt) {
   ASSERT_TRUE(pair.has_value());
   std::tie(duel.first, duel.second) = *pair;
   // The second request's timer runs before the first motion's end, at the same time.
-  duel.secondAt = 2 * program::kSecond;
+  duel.secondAt = 2 * kSecond;
   duel.run();
   ASSERT_TRUE(duel.status.ok()) << duel.status.error();
-  EXPECT_EQ(duel.recorder.starts.at(38), std::vector<program::Time>{2 * program::kSecond});
+  EXPECT_EQ(duel.recorder.starts.at(38), std::vector<Time>{2 * kSecond});
   EXPECT_EQ(duel.statistics.motions, 2u);
   EXPECT_EQ(duel.statistics.maxConcurrentMotions, 1);
   EXPECT_DOUBLE_EQ(duel.statistics.meanConcurrentMotions(), 1.0);
@@ -292,12 +290,11 @@ struct Parts {
   world::World world;
   EventQueue agenda;
   Announcer announce;
-  Mechanics mechanics{world, agenda, announce, 500 * program::kMillisecond};
+  Mechanics mechanics{world, agenda, announce, 500 * kMillisecond};
   MotionExecutor motions;
   Parts(world::World w, MotionLimits limits)
       : world(std::move(w)),
-        motions(world, {}, mechanics, agenda, announce,
-                {program::kSecond, 500 * program::kMillisecond}, limits) {}
+        motions(world, {}, mechanics, agenda, announce, {kSecond, 500 * kMillisecond}, limits) {}
 };
 
 TEST(Invariants, ABlockingModuleThatLetsGoWhileTheMobilePassesIsCaught) {

@@ -8,7 +8,6 @@ namespace datomsim::sim {
 namespace {
 
 using geometry::Cell;
-using program::MoveRefusal;
 using testing::WorldBuilder;
 
 // Modules 1..6 in a row; claims are stated by hand, as a motion would make them.
@@ -16,8 +15,8 @@ class ReservationsTest : public ::testing::Test {
  protected:
   const world::World world_ = WorldBuilder().box({0, 0, 0}, {6, 1, 1}).build();
   Reservations reservations_;
-  const Reservations::Holder first_{0, ModuleId{1}, 2 * program::kSecond};
-  const Reservations::Holder second_{1, ModuleId{4}, 3 * program::kSecond};
+  const Reservations::Holder first_{0, ModuleId{1}, 2 * kSecond};
+  const Reservations::Holder second_{1, ModuleId{4}, 3 * kSecond};
 
   static Claim claim(uint32_t mobile, uint32_t pivot, std::vector<Cell> cells = {},
                      std::vector<Claim::Blocker> blockers = {}) {
@@ -32,7 +31,7 @@ TEST_F(ReservationsTest, AHeldCellIsRefusedNamingTheHolderAndUntilWhen) {
   EXPECT_EQ(conflict->reason, MoveRefusal::Reason::kCellReserved);
   EXPECT_EQ(conflict->cell, (Cell{4, 4, 1}));
   EXPECT_EQ(conflict->holder, ModuleId{1});
-  EXPECT_EQ(conflict->until, 2 * program::kSecond);
+  EXPECT_EQ(conflict->until, 2 * kSecond);
   EXPECT_EQ(conflict->text, "cell 4,4,1 is reserved by the motion of module 1 (until 2 s)");
 }
 

@@ -12,7 +12,6 @@ namespace datomsim::sim {
 namespace {
 
 using geometry::Cell;
-using program::Message;
 using program::ModuleContext;
 using testing::Script;
 using testing::scripts;
@@ -45,7 +44,7 @@ TEST(Simulator, SendingThroughAnUnlatchedConnectorIsAnError) {
 
 TEST(Simulator, AMessageArrivesAfterTheDelayThroughTheFacingConnector) {
   std::map<uint32_t, Script> programs;
-  program::Time arrival = -1;
+  Time arrival = -1;
   int arrivedThrough = -1;
   programs[1].start = [](ModuleContext& c) {
     ASSERT_TRUE(c.send(c.orientation().ownConnector(0), Message::of(Ping{1})).ok());
@@ -57,14 +56,14 @@ TEST(Simulator, AMessageArrivesAfterTheDelayThroughTheFacingConnector) {
     arrivedThrough = connector;
   };
   SimulationOptions options;
-  options.messageDelay = 7 * program::kMillisecond;
+  options.messageDelay = 7 * kMillisecond;
   // Module 2 turned (orientation 9): its own connector facing -x is not 6.
   Simulator simulator(WorldBuilder().module({0, 0, 0}).module({1, 0, 0}, 9).build(), table(),
                       options);
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
-  EXPECT_EQ(arrival, 7 * program::kMillisecond);
+  EXPECT_EQ(arrival, 7 * kMillisecond);
   EXPECT_EQ(arrivedThrough, geometry::Orientation::fromCode(9)->ownConnector(6));
   EXPECT_EQ(simulator.statistics().messagesByType.at("Ping"), 1u);
 }
@@ -73,7 +72,7 @@ TEST(Simulator, EventsAtTheSameTimeRunInTheOrderTheyWereScheduled) {
   std::map<uint32_t, Script> programs;
   std::vector<int> order;
   programs[1].start = [](ModuleContext& c) {
-    for (int tag = 0; tag < 5; ++tag) c.setTimer(program::kSecond, tag);
+    for (int tag = 0; tag < 5; ++tag) c.setTimer(kSecond, tag);
   };
   programs[1].timer = [&](ModuleContext&, int tag) { order.push_back(tag); };
   Simulator simulator(WorldBuilder().module({0, 0, 0}).build(), table(), {});
@@ -106,7 +105,7 @@ struct Stage {
 TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
   const Stage stage;
   std::map<uint32_t, Script> programs;
-  std::optional<program::MoveResult> started;
+  std::optional<MoveResult> started;
   bool done = false;
   programs[2].start = [&](ModuleContext& c) {
     for (const motion::Evaluation& e : c.motions()) {
@@ -135,7 +134,7 @@ TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
 TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
   const Stage stage;
   std::map<uint32_t, Script> programs;
-  std::optional<program::MoveResult> started;
+  std::optional<MoveResult> started;
   programs[2].start = [&](ModuleContext& c) {
     // A motion listed when the goal was free, asked for after the world changed.
     motion::Motion stale;
@@ -155,7 +154,7 @@ TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
   ASSERT_TRUE(simulator.run().ok());
   ASSERT_TRUE(started.has_value());
   ASSERT_FALSE(started->ok());
-  EXPECT_EQ(started->refusal().reason, program::MoveRefusal::Reason::kRule);
+  EXPECT_EQ(started->refusal().reason, MoveRefusal::Reason::kRule);
   EXPECT_NE(started->error().find("the goal"), std::string::npos) << started->error();
   EXPECT_EQ(simulator.world().find(ModuleId{2})->cell, stage.mobile);
 }
@@ -175,7 +174,7 @@ TEST(Simulator, AMotionWhoseBlockingModuleHasNotCompressedIsRefused) {
   const BlockedStage stage;
   ASSERT_EQ(stage.rule.cells[2].role, motion::CellRole::kC);
   std::map<uint32_t, Script> programs;
-  std::optional<program::MoveResult> started;
+  std::optional<MoveResult> started;
   programs[2].start = [&](ModuleContext& c) {
     for (const motion::Evaluation& e : c.motions()) {
       const auto* m = std::get_if<motion::Motion>(&e);
@@ -188,7 +187,7 @@ TEST(Simulator, AMotionWhoseBlockingModuleHasNotCompressedIsRefused) {
   ASSERT_TRUE(simulator.run().ok());
   ASSERT_TRUE(started.has_value());
   ASSERT_FALSE(started->ok());
-  EXPECT_EQ(started->refusal().reason, program::MoveRefusal::Reason::kBlockerNotReady);
+  EXPECT_EQ(started->refusal().reason, MoveRefusal::Reason::kBlockerNotReady);
   EXPECT_NE(started->error().find("must compress"), std::string::npos) << started->error();
 }
 
@@ -200,9 +199,9 @@ TEST(Simulator, ReleasingAPistonAMotionNeedsIsRefusedNamingTheMotion) {
   programs[3].start = [&](ModuleContext& c) {
     ASSERT_TRUE(c.compress(c.orientation().ownPiston(stage.rule.right)).ok());
   };
-  programs[3].deformed = [](ModuleContext& c) { c.setTimer(program::kSecond, 0); };
+  programs[3].deformed = [](ModuleContext& c) { c.setTimer(kSecond, 0); };
   programs[3].timer = [&](ModuleContext& c, int) { released = c.release(); };
-  programs[2].start = [](ModuleContext& c) { c.setTimer(600 * program::kMillisecond, 0); };
+  programs[2].start = [](ModuleContext& c) { c.setTimer(600 * kMillisecond, 0); };
   programs[2].timer = [&](ModuleContext& c, int) {
     for (const motion::Evaluation& e : c.motions()) {
       const auto* m = std::get_if<motion::Motion>(&e);

@@ -1,10 +1,10 @@
-// Typed messages between module programs, carried by value without allocation.
+// Typed messages between module programs, carried by value without allocation (public API).
 //
 // A message type is a small trivially copyable struct with a name:
 //
 //   struct DistanceMsg {
 //     static constexpr std::string_view kName = "DistanceMsg";
-//     geometry::Cell cell;
+//     Cell cell;
 //     int32_t distance;
 //   };
 //
@@ -17,7 +17,7 @@
 #include <string_view>
 #include <type_traits>
 
-namespace datomsim::program {
+namespace datomsim {
 
 class Message {
  public:
@@ -55,4 +55,4 @@ class Message {
   alignas(8) std::array<unsigned char, kCapacity> bytes_{};
 };
 
-}  // namespace datomsim::program
+}  // namespace datomsim

@@ -1,5 +1,5 @@
-// The values that name and paint a module, shared by every layer: a module program sees them as
-// much as the world does, so they live below both (a program never includes world/).
+// The values that name and paint a module (public API): a module program sees them as much as the
+// simulator does, so they live below every layer of the library.
 #pragma once
 
 #include <compare>

@@ -1,6 +1,6 @@
 // What becomes of a program's request for a motion: started, queued behind the run's limit on
 // concurrent motions, or refused with a reason the program can act on (retry later, choose
-// another motion). Values only.
+// another motion). Values only (public API).
 #pragma once
 
 #include <cstdint>
@@ -9,11 +9,11 @@
 #include <utility>
 #include <vector>
 
-#include "common/module_values.h"
-#include "geometry/cell.h"
-#include "program/time.h"
+#include "datomsim/cell.h"
+#include "datomsim/time.h"
+#include "datomsim/values.h"
 
-namespace datomsim::program {
+namespace datomsim {
 
 struct MoveRefusal {
   enum class Reason : uint8_t {
@@ -28,8 +28,8 @@ struct MoveRefusal {
   static constexpr int kReasonCount = 7;
 
   Reason reason = Reason::kInvalidRequest;
-  geometry::Cell cell;  // the cell at stake, when there is one
-  ModuleId module;      // the module at stake, when there is one
+  Cell cell;        // the cell at stake, when there is one
+  ModuleId module;  // the module at stake, when there is one
   // Reservations: the mobile of the motion that holds the cell or module, and when it ends.
   ModuleId holder;
   Time until = 0;
@@ -84,4 +84,4 @@ inline std::string_view toString(MoveRefusal::Reason reason) {
   return "?";
 }
 
-}  // namespace datomsim::program
+}  // namespace datomsim

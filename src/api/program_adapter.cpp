@@ -1,0 +1,151 @@
+#include "api/program_adapter.h"
+
+#include <fmt/format.h>
+
+#include <variant>
+
+namespace datomsim::api {
+
+namespace {
+
+Motion toPublic(const motion::Motion& motion) {
+  Motion out;
+  out.pivot = motion.pivot;
+  out.pivotCell = motion.pivotCell;
+  out.from = motion.from;
+  out.goal = motion.goal;
+  out.rule = motion.rule->index;
+  for (const motion::Deformation& deformation : motion.deformations) {
+    out.helpers.push_back(
+        {deformation.module, deformation.cell, deformation.firstAxis, deformation.secondAxis});
+  }
+  out.description =
+      fmt::format("turn {} about module {} at {} to {}", motion::toString(motion.rule->turn),
+                  motion.pivot.value, toString(motion.pivotCell), toString(motion.goal));
+  if (!out.helpers.empty()) out.description += fmt::format(" ({} helpers)", out.helpers.size());
+  return out;
+}
+
+// The public Context of one module for the length of one hook.
+class ContextAdapter final : public Context {
+ public:
+  ContextAdapter(program::ModuleContext& context, const Parameters& parameters)
+      : context_(context), parameters_(parameters) {}
+
+  ModuleId id() const override { return context_.id(); }
+  Cell cell() const override { return context_.cell(); }
+  int orientation() const override { return context_.orientation().code(); }
+  Time now() const override { return context_.now(); }
+  std::optional<bool> occupied(const Cell& cell) const override { return context_.occupied(cell); }
+  uint16_t latchedConnectors() const override { return context_.latchedConnectors(); }
+  Cell cellBehind(int connector) const override {
+    if (connector < 0 || connector >= 12) return context_.cell();
+    return context_.cellBehind(connector);
+  }
+  Status send(int connector, const Message& message) override {
+    if (connector < 0 || connector >= 12) {
+      return Error{fmt::format("module {}: there is no connector {} (0 to 11)", context_.id().value,
+                               connector)};
+    }
+    return context_.send(connector, message);
+  }
+  Status compress(int piston) override {
+    if (piston < 0 || piston >= 6) {
+      return Error{
+          fmt::format("module {}: there is no piston {} (0 to 5)", context_.id().value, piston)};
+    }
+    return context_.compress(piston);
+  }
+  Status release() override { return context_.release(); }
+  int compressedPiston() const override { return context_.compressedPiston(); }
+  int pistonAlong(int worldAxis) const override {
+    if (worldAxis < 0 || worldAxis >= 6) return -1;
+    return context_.orientation().ownPiston(worldAxis);
+  }
+  std::vector<Motion> motions() const override {
+    std::vector<Motion> out;
+    for (const motion::Evaluation& evaluation : context_.motions()) {
+      if (const auto* motion = std::get_if<motion::Motion>(&evaluation)) {
+        out.push_back(toPublic(*motion));
+      }
+    }
+    return out;
+  }
+  MoveResult move(const Motion& wanted) override;
+  void setTimer(Time delay, int tag) override { context_.setTimer(delay, tag); }
+  Random& random() override { return context_.random(); }
+  void setColor(Color color) override { context_.setColor(color); }
+  void log(std::string_view text) override { context_.log(text); }
+  const Parameters& parameters() const override { return parameters_; }
+
+ private:
+  program::ModuleContext& context_;
+  const Parameters& parameters_;
+};
+
+// The motion is judged again on the world as it is now: a public Motion is a value a program may
+// keep, and the world may have changed since it was listed.
+MoveResult ContextAdapter::move(const Motion& wanted) {
+  MoveRefusal refusal;
+  refusal.reason = MoveRefusal::Reason::kInvalidRequest;
+  refusal.cell = wanted.goal;
+  refusal.module = wanted.pivot;
+  refusal.text =
+      fmt::format("module {}: no motion by rule {} about module {} from {}", context_.id().value,
+                  wanted.rule, wanted.pivot.value, toString(context_.cell()));
+  for (const motion::Evaluation& evaluation : context_.motions()) {
+    if (const auto* motion = std::get_if<motion::Motion>(&evaluation)) {
+      if (motion->rule->index == wanted.rule && motion->pivot == wanted.pivot) {
+        return context_.move(*motion);
+      }
+    } else if (const auto& refused = std::get<motion::Refusal>(evaluation);
+               refused.rule->index == wanted.rule && refused.pivot == wanted.pivot) {
+      refusal.reason = MoveRefusal::Reason::kRule;
+      refusal.cell = refused.cell;
+      refusal.module = refused.blocker;
+      refusal.text = motion::describe(refused);
+    }
+  }
+  return refusal;
+}
+
+}  // namespace
+
+void ProgramAdapter::onStart(program::ModuleContext& context) {
+  ContextAdapter adapted(context, parameters_);
+  program_->onStart(adapted);
+}
+
+void ProgramAdapter::onMessage(program::ModuleContext& context, int ownConnector,
+                               const Message& message) {
+  ContextAdapter adapted(context, parameters_);
+  program_->onMessage(adapted, ownConnector, message);
+}
+
+void ProgramAdapter::onDeformationDone(program::ModuleContext& context) {
+  ContextAdapter adapted(context, parameters_);
+  program_->onDeformationDone(adapted);
+}
+
+void ProgramAdapter::onMotionDone(program::ModuleContext& context) {
+  ContextAdapter adapted(context, parameters_);
+  program_->onMotionEnded(adapted, {true, context.cell(), std::nullopt});
+}
+
+void ProgramAdapter::onMotionRefused(program::ModuleContext& context, const MoveRefusal& refusal) {
+  ContextAdapter adapted(context, parameters_);
+  program_->onMotionEnded(adapted, {false, context.cell(), refusal});
+}
+
+void ProgramAdapter::onTimer(program::ModuleContext& context, int tag) {
+  ContextAdapter adapted(context, parameters_);
+  program_->onTimer(adapted, tag);
+}
+
+void ProgramAdapter::onLatchChanged(program::ModuleContext& context, int ownConnector,
+                                    bool latched) {
+  ContextAdapter adapted(context, parameters_);
+  program_->onNeighbourChanged(adapted, ownConnector, latched);
+}
+
+}  // namespace datomsim::api

@@ -8,6 +8,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtinyxml2-dev libfmt-dev libcairo2-dev
   clang-format cmake-format
+  # The fuzz harnesses (scripts/fuzz.sh): Clang and its libFuzzer and sanitizer runtimes.
+  clang libclang-rt-dev
 )
 # The browser viewer and its end-to-end test (docs/viewer.md).
 # Node.js may come from another source than Debian's packages (with its own npm): the commands

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds datomsim and runs every check: formatting, the unit and scenario tests (release build,
-# warnings as errors), the examples/ built against the installed package, the same tests under AddressSanitizer and UndefinedBehaviorSanitizer, a
-# determinism check across optimisation levels, a smoke run of the benchmarks, and the viewer's
-# tests (unit, then end to end in headless Chromium; DATOMSIM_SKIP_BROWSER=1 skips them). Exits
-# non-zero on the first failure.
+# warnings as errors), the examples/ built against the installed package, the same tests under
+# AddressSanitizer and UndefinedBehaviorSanitizer, a determinism check across optimisation
+# levels, 30 s of fuzzing of every reader of user input, a smoke run of the benchmarks, and the
+# viewer's tests (unit, then end to end in headless Chromium; DATOMSIM_SKIP_BROWSER=1 skips them).
+# Exits non-zero on the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -42,6 +43,9 @@ for run in "" -walkers -heap; do
 done
 echo "traces identical ($(wc -l < "$scratch/release.jsonl"), " \
   "$(wc -l < "$scratch/release-walkers.jsonl") and $(wc -l < "$scratch/release-heap.jsonl") lines)"
+
+echo "== fuzzing: each reader of user input for 30 s (scripts/fuzz.sh)"
+scripts/fuzz.sh 30
 
 echo "== benchmarks (smoke run)"
 scripts/bench.sh --smoke

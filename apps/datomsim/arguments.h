@@ -21,6 +21,15 @@ class UsageError : public std::runtime_error {
 // "x,y,z" with integers; throws UsageError naming the option and the value.
 geometry::Cell parseCell(const std::string& option, const std::string& text);
 
+// CLI11 takes "nan" and "inf" as numbers: a check for options where they make no sense.
+extern const CLI::Validator kFinite;
+// Finite numbers >= 0, and > 0.
+extern const CLI::Validator kNonNegative;
+extern const CLI::Validator kPositive;
+
+// A seed: an integer 0 .. 18446744073709551615, refused rather than saturated beyond.
+uint64_t parseSeed(const std::string& option, const std::string& text);
+
 // "paper" | "strict", and "on" | "off" for the attachment and connectivity checks.
 motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment,
                                      const std::string& connectivity = "off");

@@ -3,16 +3,55 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <new>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "algorithms/registry.h"
 #include "commands.h"
 #include "datomsim/main.h"
 
 namespace datomsim {
+
+namespace app {
+
+// "; did you mean \"run\"?" for the subcommand nearest a mistyped word (edit distance at most 2),
+// else the list of subcommands.
+std::string nearestSubcommand(const CLI::App& app, std::string_view word) {
+  auto distance = [](std::string_view a, std::string_view b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+      size_t diagonal = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= b.size(); ++j) {
+        const size_t above = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+        diagonal = above;
+      }
+    }
+    return row[b.size()];
+  };
+  std::string best, names;
+  size_t bestDistance = 3;
+  for (const CLI::App* command : app.get_subcommands({})) {
+    const std::string& name = command->get_name();
+    names += (names.empty() ? "" : ", ") + name;
+    if (const size_t d = distance(word, name); d < bestDistance) {
+      bestDistance = d;
+      best = name;
+    }
+  }
+  if (!best.empty()) return fmt::format("; did you mean \"{}\"?", best);
+  return "; the subcommands are " + names;
+}
+
+}  // namespace app
 
 int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
   if (const Status names = algorithms::checkAdded(programs); !names.ok()) {
@@ -34,10 +73,24 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
   app::addViewCommand(app);
   app::addMeshCommand(app);
 
+  // A first word that names no subcommand: say so, and which one was meant.
+  const auto commands = app.get_subcommands({});
+  if (argc > 1 && argv[1][0] != '-' &&
+      std::none_of(commands.begin(), commands.end(),
+                   [&](const CLI::App* command) { return command->get_name() == argv[1]; })) {
+    fmt::print(stderr, "datomsim: error: unknown subcommand \"{}\"{}\n", argv[1],
+               app::nearestSubcommand(app, argv[1]));
+    return 1;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+    // Help and version exit 0; every other mistake on the command line exits 1 with one line,
+    // as any bad input does (CLI11's own codes, 100 and up, would say nothing more).
+    if (error.get_exit_code() == 0) return app.exit(error);
+    fmt::print(stderr, "datomsim: error: {}\nRun with --help for more information.\n",
+               error.what());
+    return 1;
   } catch (const app::UsageError& error) {
     fmt::print(stderr, "datomsim: error: {}\n", error.what());
     return 1;

@@ -1,6 +1,9 @@
 #include "commands.h"
 
+#include <fmt/format.h>
+
 #include <cstdio>
+#include <filesystem>
 
 #include "common/atomic_file.h"
 #include "render/distance_map.h"
@@ -22,6 +25,54 @@ void writeOutput(const std::string& path, const std::string& text) {
     }
     return Ok{};
   }));
+}
+
+namespace {
+
+// Whether two paths name the same file: the same file on disk, or the same absolute path when
+// the output does not exist yet.
+bool sameFile(const std::string& a, const std::string& b) {
+  std::error_code error;
+  if (std::filesystem::equivalent(a, b, error)) return true;
+  // absolute() first: weakly_canonical leaves a relative path with no existing part relative.
+  const auto absoluteA = std::filesystem::weakly_canonical(std::filesystem::absolute(a), error);
+  if (error) return false;
+  const auto absoluteB = std::filesystem::weakly_canonical(std::filesystem::absolute(b), error);
+  return !error && absoluteA == absoluteB;
+}
+
+bool isStandardOutput(const std::string& path) {
+  return path.empty() || path == "-";
+}
+
+}  // namespace
+
+void refuseClashes(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs) {
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    const NamedPath& output = outputs[i];
+    if (isStandardOutput(output.path)) {
+      for (size_t k = 0; k < i; ++k) {
+        if (isStandardOutput(outputs[k].path)) {
+          throw UsageError(
+              fmt::format("{} and {} would both write to standard output; give one of them a file",
+                          outputs[k].option, output.option));
+        }
+      }
+      continue;
+    }
+    for (const NamedPath& input : inputs) {
+      if (!input.path.empty() && input.path != "-" && sameFile(input.path, output.path)) {
+        throw UsageError(fmt::format("{} {} would overwrite the {} it reads; choose another file",
+                                     output.option, output.path, input.option));
+      }
+    }
+    for (size_t k = 0; k < i; ++k) {
+      if (!isStandardOutput(outputs[k].path) && sameFile(outputs[k].path, output.path)) {
+        throw UsageError(fmt::format("{} and {} both name {}; choose two files", outputs[k].option,
+                                     output.option, output.path));
+      }
+    }
+  }
 }
 
 void addOutputOption(CLI::App& command, std::string& out) {

@@ -53,6 +53,17 @@ std::string runJson(const algorithms::ProgramInfo& program, const experiment::Ru
 // Writes text to a file atomically, or to standard output when the path is empty or "-".
 void writeOutput(const std::string& path, const std::string& text);
 
+// A file a command reads or writes, with the option that names it ("scene", "--out"). An output
+// path that is empty or "-" is standard output.
+struct NamedPath {
+  std::string option;
+  std::string path;
+};
+
+// Refuses, before anything is read or written, outputs that would overwrite an input, two
+// outputs naming the same file, and two outputs both on standard output.
+void refuseClashes(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs);
+
 // The --out option whose value writeOutput takes.
 void addOutputOption(CLI::App& command, std::string& out);
 

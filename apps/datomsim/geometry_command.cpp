@@ -24,11 +24,15 @@ void addGeometryCommand(CLI::App& app) {
       ->add_option("--radius", args->radius,
                    "Radius r: half the distance between opposite "
                    "connectors")
+      ->check(kFinite)
       ->capture_default_str();
   command->add_option("--thickness", args->thickness, "Thickness t of the moving parts")
+      ->check(kFinite)
       ->capture_default_str();
-  command->add_option("--fraction", args->fraction,
-                      "Also the joint angles (degrees) at this compression fraction, 0..1");
+  command
+      ->add_option("--fraction", args->fraction,
+                   "Also the joint angles (degrees) at this compression fraction, 0..1")
+      ->check(kFinite & CLI::Range(0.0, 1.0));
   command->add_flag("--json", args->json, "Print one JSON object");
   command->callback([args] {
     const datom::Dimensions d = unwrap(datom::dimensionsFor(args->radius, args->thickness));

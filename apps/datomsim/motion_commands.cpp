@@ -36,6 +36,11 @@ void addReach(CLI::App& app) {
   command->add_option("--png", args->png, "Write the distance map as a PNG picture");
   command->add_option("--svg", args->svg, "Write the distance map as an SVG picture");
   command->callback([args] {
+    // Pictures are files (never standard output): only --out may be "-".
+    std::vector<NamedPath> outputs = {{"--out", args->out}};
+    if (!args->png.empty()) outputs.push_back({"--png", args->png});
+    if (!args->svg.empty()) outputs.push_back({"--svg", args->svg});
+    refuseClashes({{"scene", args->scene}}, outputs);
     const geometry::Cell goal = parseCell("--goal", args->goal);
     const motion::RuleOptions options = args->rules.options();
     io::Scene scene = unwrap(io::readScene(args->scene));
@@ -73,10 +78,12 @@ void addMoves(CLI::App& app) {
   args->rules.addTo(*command);
   addOutputOption(*command, args->out);
   command->callback([args] {
+    refuseClashes({{"scene", args->scene}}, {{"--out", args->out}});
     const geometry::Cell at = parseCell("--at", args->at);
     const io::Scene scene = unwrap(io::readScene(args->scene));
     if (!scene.world.isInside(at)) {
-      throw UsageError("--at " + geometry::toString(at) + " is outside the world");
+      throw UsageError("--at " + geometry::toString(at) + " " +
+                       scene.world.bounds().whyOutside(at));
     }
     const world::Module* mobile = scene.world.moduleAt(at);
     const motion::Mobile where{at, mobile ? std::optional(mobile->id) : std::nullopt};

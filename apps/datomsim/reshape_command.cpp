@@ -18,7 +18,7 @@ struct ReshapeArguments {
   int modules = 20;
   int side = 96;
   int base = 0;
-  uint64_t seed = 1;
+  std::string seed = "1";
 };
 
 void write(scene::ReshapeCase reshape, target::Target target, const std::string& out) {
@@ -85,12 +85,13 @@ void addReshapeGenerator(CLI::App& generate) {
       return writeHeapToCylinder(x, y, args->out);
     }
     scene::ReshapeCase reshape =
-        kase == "arch2"     ? unwrap(scene::archFromLayer(2))
-        : kase == "arch1"   ? unwrap(scene::archFromLayer(1))
-        : kase == "line"    ? unwrap(scene::lineToBlock(args->length))
-        : kase == "pyramid" ? unwrap(scene::cornerToPyramid(args->side, args->base))
-                            : unwrap(scene::randomReshape(floorSize().first, floorSize().second,
-                                                          args->modules, args->seed));
+        kase == "arch2"   ? unwrap(scene::archFromLayer(2))
+        : kase == "arch1" ? unwrap(scene::archFromLayer(1))
+        : kase == "line"  ? unwrap(scene::lineToBlock(args->length))
+        : kase == "pyramid"
+            ? unwrap(scene::cornerToPyramid(args->side, args->base))
+            : unwrap(scene::randomReshape(floorSize().first, floorSize().second, args->modules,
+                                          parseSeed("--seed", args->seed)));
     target::Target target = unwrap(target::Target::grid(reshape.target));
     write(std::move(reshape), std::move(target), args->out);
   });

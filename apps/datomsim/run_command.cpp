@@ -131,7 +131,7 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
     double timeoutS = 0, untilS = 0;
     bool stats = false;
     RuleArguments rules;
-    uint64_t seed = 1;
+    std::string seed = "1";
     double delayMs = 10, jitterMs = 0;
     int maxMotions = 0;
   };
@@ -156,18 +156,18 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
   command->add_option("--seed", args->seed, "Seed of the modules' random streams and delays")
       ->capture_default_str();
   command->add_option("--delay-ms", args->delayMs, "Message delay in milliseconds")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kNonNegative)
       ->capture_default_str();
   command
       ->add_option("--jitter-ms", args->jitterMs,
                    "Extra random message delay, uniform in [0, jitter], in milliseconds")
-      ->check(CLI::NonNegativeNumber)
+      ->check(kNonNegative)
       ->capture_default_str();
   command
       ->add_option("--max-motions", args->maxMotions,
                    "Motions in flight at once; requests beyond wait in request order "
                    "(default: no limit; 1 gives the sequential baseline)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   command->add_option("--target", args->target,
                       "Take the target from this scene file (its modules are ignored) instead of "
                       "the scene's own (reconfigure)");
@@ -175,7 +175,7 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
       ->add_option("--timeout", args->timeoutS,
                    "Simulated seconds after which a reconfiguration stops (default: 3600 + 10 per "
                    "module, times the movers per --max-motions slot)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   command
       ->add_option("--param", args->parameters,
                    "A program parameter KEY=VALUE (repeatable; over the scene's \"parameters\"); "
@@ -186,13 +186,16 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
       ->add_option("--until", args->untilS,
                    "Stop at this simulated time in seconds, for programs that never fall quiet "
                    "(default: when no event remains)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   addOutputOption(*command, args->out);
   command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
   command->add_flag("--stats", args->stats,
                     "Print the run's statistics (events by kind, messages by type, motions, "
                     "deformations, simulated and wall time) on standard error");
   command->callback([args, command, added] {
+    std::vector<NamedPath> outputs = {{"--out", args->out}};
+    if (!args->trace.empty()) outputs.push_back({"--trace", args->trace});
+    refuseClashes({{"scene", args->scene}, {"--target", args->target}}, outputs);
     experiment::RunRequest request;
     request.program = args->program;
     request.added = added;
@@ -209,7 +212,7 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
       request.simulation.rules.connectivity = request.simulation.connectivity;
     }
     request.simulation.maxMotions = args->maxMotions;
-    request.simulation.seed = args->seed;
+    request.simulation.seed = parseSeed("--seed", args->seed);
     request.simulation.messageDelay = Time(args->delayMs * kMillisecond);
     request.simulation.messageJitter = Time(args->jitterMs * kMillisecond);
     request.trace = !args->trace.empty();

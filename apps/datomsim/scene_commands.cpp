@@ -55,7 +55,9 @@ target::Target boxTarget(const GenerateArguments& args) {
   }
   for (const int64_t high :
        {int64_t{origin.x} + size.x, int64_t{origin.y} + size.y, int64_t{origin.z} + size.z}) {
-    if (high - 1 > INT32_MAX) throw UsageError("--target-box leaves the 32-bit cell range");
+    if (high > world::kCoordinateLimit) {
+      throw UsageError("--target-box leaves the supported coordinate range (docs/limits.md)");
+    }
   }
   std::vector<geometry::Cell> cells;
   cells.reserve(size_t(count));
@@ -68,6 +70,9 @@ target::Target boxTarget(const GenerateArguments& args) {
 }
 
 void writeGenerated(world::World world, const std::string& name, const GenerateArguments& args) {
+  std::vector<NamedPath> inputs;
+  for (const std::string& file : args.targetFiles) inputs.push_back({"--target", file});
+  refuseClashes(inputs, {{"--out", args.out}});
   io::Scene scene;
   scene.world = std::move(world);
   scene.name = name;
@@ -124,7 +129,7 @@ void addGenerate(CLI::App& app) {
   });
 
   struct RandomArguments {
-    uint64_t seed = 1;
+    std::string seed = "1";
     size_t count = 100;
     std::string grid;
     int height = 3;
@@ -150,8 +155,9 @@ void addGenerate(CLI::App& app) {
     if (!random->grid.empty()) options.gridSize = parseCell("--grid", random->grid);
     options.maxHeight = random->height;
     options.randomOrientations = random->orientations;
-    writeGenerated(unwrap(scene::random(random->seed, random->count, options)),
-                   fmt::format("random, seed {}", random->seed), random->generate);
+    const uint64_t seed = parseSeed("--seed", random->seed);
+    writeGenerated(unwrap(scene::random(seed, random->count, options)),
+                   fmt::format("random, seed {}", seed), random->generate);
   });
 }
 
@@ -165,6 +171,7 @@ void addConvert(CLI::App& app) {
   command->add_option("scene", args->in, "Scene file to read (.xml or .json)")->required();
   command->add_option("-o,--out", args->out, "Scene file to write (.xml or .json)")->required();
   command->callback([args] {
+    refuseClashes({{"scene", args->in}}, {{"--out", args->out}});
     const io::Scene scene = unwrap(io::readScene(args->in));
     check(io::writeScene(scene, args->out));
   });

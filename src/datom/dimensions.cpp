@@ -46,6 +46,10 @@ Result<Dimensions> dimensionsFor(double radius, double thickness) {
   if (!std::isfinite(radius) || radius <= 0.0) {
     return Error{fmt::format("radius must be a positive finite number, got {}", radius)};
   }
+  // Far beyond any unit a module is measured in, and where the dimensions stay finite.
+  if (radius > 1e12 || radius < 1e-12) {
+    return Error{fmt::format("radius must lie between 1e-12 and 1e12, got {}", radius)};
+  }
   if (!std::isfinite(thickness) || thickness < 0.0) {
     return Error{fmt::format("thickness must be a non-negative finite number, got {}", thickness)};
   }

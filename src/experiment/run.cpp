@@ -55,8 +55,8 @@ Status checkCellParameters(const world::World& world, const ProgramEntry& entry,
     if (parameter.type != Parameter::Type::kCell) continue;
     const Cell cell = checked->cell(parameter.name);
     if (!world.isInside(cell)) {
-      return Error{fmt::format("parameter {} of program {}: cell {} is outside the world",
-                               parameter.name, entry.name, toString(cell))};
+      return Error{fmt::format("parameter {} of program {}: cell {} {}", parameter.name, entry.name,
+                               toString(cell), world.bounds().whyOutside(cell))};
     }
     if (parameter.holdsModule && !world.moduleAt(cell)) {
       return Error{fmt::format("parameter {} of program {}: cell {} holds no module",
@@ -82,10 +82,12 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     return Error{std::string(info->name) + " needs a goal cell (--goal)"};
   }
   if (request.goal && !world.isInside(*request.goal)) {
-    return Error{"goal " + toString(*request.goal) + " is outside the world"};
+    return Error{"goal " + toString(*request.goal) + " " +
+                 world.bounds().whyOutside(*request.goal)};
   }
   if (request.start && !world.isInside(*request.start)) {
-    return Error{"start " + toString(*request.start) + " is outside the world"};
+    return Error{"start " + toString(*request.start) + " " +
+                 world.bounds().whyOutside(*request.start)};
   }
   if (info->mobileWalks && !request.start) {
     return Error{std::string(info->name) + " needs a start cell (--start)"};
@@ -107,7 +109,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     }
     for (const Cell& cell : target) {
       if (!world.isInside(cell)) {
-        return Error{"target cell " + toString(cell) + " is outside the world"};
+        return Error{"target cell " + toString(cell) + " " + world.bounds().whyOutside(cell)};
       }
     }
     shape = std::make_shared<algorithms::TargetShape>(target);

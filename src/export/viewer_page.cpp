@@ -9,9 +9,12 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "common/atomic_file.h"
+#include "common/json_nesting.h"
+#include "export/trace_check.h"
 #include "io/scene_file.h"
 #include "record/trace_writer.h"
 
@@ -19,6 +22,10 @@ namespace datomsim::exporting {
 namespace {
 
 using Json = nlohmann::json;
+
+// A trace or distance map nests three levels; anything far deeper is refused before a parser or
+// printer walks it recursively.
+constexpr int kMaxNesting = 32;
 
 // One top-level JSON value of a text: where it starts and ends, and its first line.
 struct ValueSpan {
@@ -62,7 +69,10 @@ Result<std::vector<ValueSpan>> splitValues(const std::string& text, const std::s
       if (ch == '"') {
         inString = true;
       } else if (ch == '{' || ch == '[') {
-        ++depth;
+        if (++depth > kMaxNesting) {
+          return Error{
+              fmt::format("{}:{}: values nested deeper than {} levels", name, line, kMaxNesting)};
+        }
       } else if (ch == '}' || ch == ']') {
         if (--depth == 0) {
           ++i;
@@ -207,24 +217,18 @@ Result<std::string> checkTrace(const std::string& text, const std::string& name)
   if (spans->empty()) return Error{fmt::format("{}: the trace is empty", name)};
   const auto header = parseSpan(text, spans->front(), name);
   if (!header) return Error{header.error()};
-  const int line = spans->front().line;
-  if (!isTraceHeader(*header)) {
-    return Error{
-        fmt::format("{}:{}: not a datomsim trace (the header's \"format\" must be "
-                    "\"datomsim-trace\")",
-                    name, line)};
+  // The viewer's own checks (export/trace_check.h), so that the page never refuses a trace
+  // this command accepted.
+  if (const std::string problem = headerProblem(*header); !problem.empty()) {
+    return Error{fmt::format("{}:{}: {}", name, spans->front().line, problem)};
   }
-  const Json version = header->contains("version") ? (*header)["version"] : Json();
-  if (version != 1) {
-    return Error{fmt::format("{}:{}: unsupported trace version {}: this viewer reads version 1",
-                             name, line, version.dump())};
-  }
+  std::set<int64_t> ids;
+  for (const Json& module : (*header)["modules"]) ids.insert(int64_t(module["id"].get<double>()));
   for (size_t k = 1; k < spans->size(); ++k) {
     const auto value = parseSpan(text, (*spans)[k], name);
     if (!value) return Error{value.error()};
-    if (!value->is_object() || !value->contains("t") || !(*value)["t"].is_number() ||
-        (*value)["t"].get<double>() < 0) {
-      return Error{fmt::format("{}:{}: a change needs a time \"t\" >= 0", name, (*spans)[k].line)};
+    if (const std::string problem = changeProblem(*value, ids); !problem.empty()) {
+      return Error{fmt::format("{}:{}: {}", name, (*spans)[k].line, problem)};
     }
   }
   const auto description = header->find("description");
@@ -239,6 +243,10 @@ std::string sceneTrace(const world::World& world, const std::string& description
 }
 
 Result<std::string> checkOverlay(const std::string& text, const std::string& name) {
+  if (const auto line = lineNestedDeeperThan(text, kMaxNesting)) {
+    return Error{
+        fmt::format("{}:{}: values nested deeper than {} levels", name, *line, kMaxNesting)};
+  }
   const Json overlay = Json::parse(text, nullptr, false);
   if (overlay.is_discarded()) return Error{fmt::format("{}: invalid JSON", name)};
   if (!overlay.is_object()) return Error{fmt::format("{}: a distance map must be an object", name)};

@@ -140,12 +140,9 @@ Error SceneHandler::placementError(size_t i) {
   const world::Module& module = pending_[i].module;
   const std::string path = fmt::format("modules[{}]", i);
   const std::string cell = geometry::toString(module.cell);
-  if (module.cell.z < 0) {
-    return failure(path + ".cell", fmt::format("cell {} is below the ground (z < 0)", cell));
-  }
   if (!world.isInside(module.cell)) {
-    return failure(path + ".cell", fmt::format("cell {} is outside the grid {}", cell,
-                                               geometry::toString(*bounds_.gridSize)));
+    return failure(path + ".cell",
+                   fmt::format("cell {} {}", cell, world.bounds().whyOutside(module.cell)));
   }
   if (const world::Module* other = world.moduleAt(module.cell)) {
     return failure(path + ".cell",

@@ -55,6 +55,8 @@ class SceneHandler {
   bool string(Json::string_t& v) { return scalar(Json(std::move(v))); }
   // Only binary formats (CBOR, ...) produce binary values, never JSON text.
   bool binary(Json::binary_t&) { return scalar(Json()); }
+  static constexpr size_t kMaxNesting = 32;
+
   bool start_object(std::size_t) { return open(Json::object()); }
   bool start_array(std::size_t) { return open(Json::array()); }
   bool end_object() { return close(); }

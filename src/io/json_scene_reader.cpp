@@ -40,6 +40,11 @@ bool SceneHandler::scalar(Json value) {
 
 // A start_object or start_array event.
 bool SceneHandler::open(Json container) {
+  // A scene nests five levels at most (a target's cells); thousands of brackets are an attack on
+  // the stack of whatever walks the value, not a scene.
+  if (capturing_ && captureStack_.size() >= kMaxNesting) {
+    return fail(key_, fmt::format("values nested deeper than {} levels", kMaxNesting));
+  }
   if (capturing_) {
     captureStack_.push_back(&insertIntoCapture(std::move(container)));
     return true;

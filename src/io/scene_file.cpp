@@ -1,5 +1,7 @@
 #include "io/scene_file.h"
 
+#include <fmt/format.h>
+
 #include <cctype>
 #include <cerrno>
 #include <cstring>
@@ -31,6 +33,23 @@ Result<Scene> readScene(const std::filesystem::path& path) {
   if (std::error_code error; std::filesystem::is_directory(path, error)) {
     return Error{name + ": is a directory"};
   }
+  // A device (/dev/zero, a terminal) would be read until memory runs out; a pipe is fine, read
+  // up to the limit below.
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!error && !std::filesystem::is_regular_file(status) &&
+      status.type() != std::filesystem::file_type::fifo) {
+    return Error{name + ": is not a regular file"};
+  }
+  // XML is read whole: refuse what would not fit (JSON streams).
+  if (*format == SceneFormat::kVisibleSimXml && std::filesystem::is_regular_file(status) &&
+      std::filesystem::file_size(path, error) > kMaxXmlSceneBytes) {
+    return Error{
+        fmt::format("{}: {:.1f} GB is more than an XML scene may hold ({} GB, "
+                    "docs/limits.md); use the JSON format for scenes this large",
+                    name, double(std::filesystem::file_size(path, error)) / 1e9,
+                    kMaxXmlSceneBytes / 1000000000)};
+  }
   std::ifstream input;
   // A larger buffer than the default 8 KB: a 2-million-module JSON file is 130 MB.
   std::vector<char> buffer(size_t{1} << 20);
@@ -39,7 +58,15 @@ Result<Scene> readScene(const std::filesystem::path& path) {
   if (!input) return Error{name + ": cannot open: " + std::strerror(errno)};
 
   if (*format == SceneFormat::kJson) return parseJsonScene(input, name);
-  const std::string text((std::istreambuf_iterator<char>(input)), std::istreambuf_iterator<char>());
+  std::string text;
+  std::vector<char> chunk(size_t{1} << 20);
+  while (input.read(chunk.data(), std::streamsize(chunk.size())) || input.gcount() > 0) {
+    text.append(chunk.data(), size_t(input.gcount()));
+    if (text.size() > kMaxXmlSceneBytes) {
+      return Error{fmt::format("{}: more than the {} GB an XML scene may hold (docs/limits.md)",
+                               name, kMaxXmlSceneBytes / 1000000000)};
+    }
+  }
   if (input.bad()) return Error{name + ": cannot read: " + std::strerror(errno)};
   return parseVisibleSimXml(text, name);
 }

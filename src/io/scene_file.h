@@ -14,6 +14,9 @@ namespace datomsim::io {
 
 enum class SceneFormat { kVisibleSimXml, kJson };
 
+// An XML scene is read whole into memory: at most this many bytes (about 25 million blocks).
+inline constexpr size_t kMaxXmlSceneBytes = 2'000'000'000;
+
 // The format of a path by its extension (case-insensitive), or an error naming the extension.
 Result<SceneFormat> sceneFormatOf(const std::filesystem::path& path);
 

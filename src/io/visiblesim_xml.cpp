@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <tinyxml2.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -58,12 +60,89 @@ const char* describeXmlError(XMLError error) {
   }
 }
 
+// Whether a code point is a character XML 1.0 allows (its production Char).
+bool isXmlChar(uint64_t c) {
+  return c == 0x9 || c == 0xA || c == 0xD || (c >= 0x20 && c <= 0xD7FF) ||
+         (c >= 0xE000 && c <= 0xFFFD) || (c >= 0x10000 && c <= 0x10FFFF);
+}
+
+// What tinyxml2 lets through and silently mangles: a '&' that starts no reference (it keeps the
+// text raw, or drops what follows a bad numeric reference) and control characters. Comments,
+// CDATA sections and processing instructions are skipped. The error names the line.
+Status checkXmlCharacters(std::string_view text, std::string_view source) {
+  int line = 1;
+  auto error = [&](const std::string& what) {
+    return Error{fmt::format("{}:{}: malformed XML: {}", source, line, what)};
+  };
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') ++line;
+    if (c == '<') {
+      // Skip what may hold any character up to its end marker.
+      for (const auto& [open, close] :
+           {std::pair{"<!--", "-->"}, std::pair{"<![CDATA[", "]]>"}, std::pair{"<?", "?>"}}) {
+        if (text.substr(i).starts_with(open)) {
+          const size_t end = text.find(close, i);
+          if (end == std::string_view::npos) return error(fmt::format("unclosed {}", open));
+          for (size_t k = i; k < end; ++k) line += text[k] == '\n';
+          i = end + std::string_view(close).size() - 1;
+          break;
+        }
+      }
+      continue;
+    }
+    if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+      return error(fmt::format("control character U+{:04X} is not allowed", int(c)));
+    }
+    if (c != '&') continue;
+    // The reference: '&', then letters, digits and '#', then ';' when there is one.
+    size_t end = i + 1;
+    while (end < text.size() && end - i < 12 &&
+           (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '#')) {
+      ++end;
+    }
+    if (end < text.size() && text[end] == ';') ++end;
+    const std::string_view reference = text.substr(i, end - i);
+    bool valid = false;
+    if (reference == "&lt;" || reference == "&gt;" || reference == "&amp;" ||
+        reference == "&quot;" || reference == "&apos;") {
+      valid = true;
+    } else if (reference.starts_with("&#") && reference.ends_with(';') && reference.size() > 3) {
+      const bool hex = reference[2] == 'x';
+      const std::string_view digits =
+          reference.substr(hex ? 3 : 2, reference.size() - (hex ? 4 : 3));
+      uint64_t value = 0;
+      valid = !digits.empty() && digits.size() <= 8;
+      for (const char d : digits) {
+        const int digit = d >= '0' && d <= '9'          ? d - '0'
+                          : hex && d >= 'a' && d <= 'f' ? d - 'a' + 10
+                          : hex && d >= 'A' && d <= 'F' ? d - 'A' + 10
+                                                        : -1;
+        if (digit < 0) valid = false;
+        value = value * (hex ? 16 : 10) + uint64_t(std::max(digit, 0));
+      }
+      valid = valid && isXmlChar(value);
+    }
+    if (!valid) {
+      return error(
+          fmt::format("\"{}\" is no character reference: write & as &amp; (references "
+                      "are &lt; &gt; &amp; &quot; &apos; and &#N; for an allowed "
+                      "character)",
+                      reference));
+    }
+  }
+  return Ok{};
+}
+
 // Reads one document; keeps the source name and the line of every block for error messages.
 class XmlSceneReader {
  public:
   explicit XmlSceneReader(std::string_view source) : source_(source) {}
 
   Result<Scene> read(std::string_view text) {
+    if (Status characters = checkXmlCharacters(text, source_); !characters) {
+      return Error{characters.error()};
+    }
     XMLDocument document;
     if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
       return malformed(document);
@@ -227,13 +306,8 @@ class XmlSceneReader {
       }
 
       // Check what World::add would refuse, to name the lines involved.
-      if (module.cell.z < 0) {
-        return attributeError(block, "position", position, "is below the ground (z < 0)");
-      }
       if (!world.isInside(module.cell)) {
-        return attributeError(
-            block, "position", position,
-            "is outside the grid " + geometry::toString(*world.bounds().gridSize));
+        return attributeError(block, "position", position, world.bounds().whyOutside(module.cell));
       }
       if (const world::Module* other = world.moduleAt(module.cell)) {
         return attributeError(
@@ -293,7 +367,37 @@ Status checkAttributes(const AttributeList& list, std::string_view element,
   return Ok{};
 }
 
+// A text XML 1.0 can hold: no NUL (tinyxml2 would end the text there) and no other control
+// character but tab, line feed and carriage return.
+Status checkXmlText(std::string_view text, std::string_view what) {
+  for (const char c : text) {
+    if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+      return Error{fmt::format("{} holds the control character U+{:04X}, which XML cannot hold",
+                               what, int(c))};
+    }
+  }
+  return Ok{};
+}
+
 Status checkWritable(const Scene& scene) {
+  if (scene.name) {
+    if (Status s = checkXmlText(*scene.name, "the scene's name"); !s) return s;
+  }
+  if (scene.description) {
+    if (Status s = checkXmlText(*scene.description, "the scene's description"); !s) return s;
+  }
+  for (const AttributeList* list :
+       {&scene.visibleSim.world, scene.visibleSim.camera ? &*scene.visibleSim.camera : nullptr,
+        scene.visibleSim.spotlight ? &*scene.visibleSim.spotlight : nullptr}) {
+    if (!list) continue;
+    for (const Attribute& attribute : *list) {
+      if (Status s = checkXmlText(attribute.value, "attribute " + attribute.name); !s) return s;
+    }
+  }
+  for (const target::Target& target : scene.targets) {
+    if (target.format() != target::Format::kCsg) continue;
+    if (Status s = checkXmlText(target.csgContent(), "a CSG target"); !s) return s;
+  }
   const VisibleSimView& view = scene.visibleSim;
   if (Status s = checkAttributes(view.world, "world", {"gridSize", "name", "description"}); !s) {
     return s;

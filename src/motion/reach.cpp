@@ -24,7 +24,7 @@ std::vector<std::pair<Cell, int>> DistanceMap::sorted() const {
 Result<DistanceMap> reach(const world::World& fixedWorld, const RuleTable& table, Cell goal,
                           const RuleOptions& options) {
   if (!fixedWorld.isInside(goal)) {
-    return Error{"goal " + toString(goal) + " is outside the world"};
+    return Error{"goal " + toString(goal) + " " + fixedWorld.bounds().whyOutside(goal)};
   }
   if (const world::Module* module = fixedWorld.moduleAt(goal)) {
     return Error{"goal " + toString(goal) + " holds module " + std::to_string(module->id.value) +

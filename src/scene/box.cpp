@@ -1,5 +1,7 @@
 #include "scene/box.h"
 
+#include <fmt/format.h>
+
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -13,16 +15,22 @@ Status addBox(world::World& world, const Cell& size, const Cell& origin, Color c
   if (size.x <= 0 || size.y <= 0 || size.z <= 0) {
     return Error{"box size " + geometry::toString(size) + " must be three positive integers"};
   }
-  // Ids are 32 bits; refuse before spending minutes filling a world that cannot exist.
+  // Refuse up front what cannot exist, before spending minutes and gigabytes filling it.
   const int64_t count = int64_t{size.x} * size.y * size.z;
-  if (count + world.nextFreeId().value > int64_t{UINT32_MAX}) {
-    return Error{"box size " + geometry::toString(size) + " has too many modules"};
+  if (count + int64_t(world.size()) > int64_t(world::kMaxModules)) {
+    return Error{
+        fmt::format("a box of {} is {} modules; a world holds at most {} "
+                    "(docs/limits.md)",
+                    geometry::toString(size), count, world::kMaxModules)};
   }
   for (const auto& [low, extent] :
        {std::pair{origin.x, size.x}, std::pair{origin.y, size.y}, std::pair{origin.z, size.z}}) {
-    if (int64_t{low} + extent - 1 > INT32_MAX) {
-      return Error{"box at " + geometry::toString(origin) + " of size " + geometry::toString(size) +
-                   " leaves the 32-bit cell range"};
+    if (low < -world::kCoordinateLimit || int64_t{low} + extent > world::kCoordinateLimit) {
+      return Error{
+          fmt::format("a box at {} of size {} leaves the supported coordinate range, "
+                      "-{} to {} (docs/limits.md)",
+                      geometry::toString(origin), geometry::toString(size), world::kCoordinateLimit,
+                      world::kCoordinateLimit - 1)};
     }
   }
   uint32_t id = world.nextFreeId().value;

@@ -34,7 +34,10 @@ Result<world::World> random(uint64_t seed, size_t count, const RandomOptions& op
     return Error{"random scene: maxHeight " + std::to_string(options.maxHeight) +
                  " must be at least 1"};
   }
-  if (count > UINT32_MAX - 1) return Error{"random scene: too many modules"};
+  if (count > world::kMaxModules) {
+    return Error{"random scene: " + std::to_string(count) + " modules; a world holds at most " +
+                 std::to_string(world::kMaxModules) + " (docs/limits.md)"};
+  }
 
   Cell start{0, 0, 0};
   if (options.start) {

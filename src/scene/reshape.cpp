@@ -177,8 +177,16 @@ Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t se
 
 Result<ReshapeCase> cornerToPyramid(int side, int base) {
   if (side < 8) return Error{"a floor for a pyramid is at least 8 by 8"};
+  if (int64_t{side} * side > int64_t(world::kMaxModules)) {
+    return Error{"a floor of " + std::to_string(side) + " by " + std::to_string(side) +
+                 " is more modules than a world holds (" + std::to_string(world::kMaxModules) +
+                 ", docs/limits.md)"};
+  }
   if (base == 0) base = side / 8;
-  if (base < 1) return Error{"the pyramid's base is at least 1 (" + std::to_string(base) + ")"};
+  if (base < 1 || base > side) {
+    return Error{"the pyramid's base is at least 1 and at most the floor's side (" +
+                 std::to_string(base) + ")"};
+  }
   int pyramid = 0;
   for (int layer = base; layer >= 1; --layer) pyramid += layer * layer;
   const int width = int(std::ceil(std::sqrt(double(pyramid))));

@@ -2,11 +2,13 @@
 
 #include <bit>
 
+#include "world/bounds.h"
+
 namespace datomsim::world {
 namespace {
 
 constexpr int kBits = 21;
-constexpr int32_t kLimit = 1 << (kBits - 1);
+static_assert(kCoordinateLimit == 1 << (kBits - 1), "packed cells hold the coordinate range");
 constexpr uint64_t kMask = (uint64_t{1} << kBits) - 1;
 
 // A strong 64-bit mix (splitmix64 finaliser), so that neighbouring cells spread over the table.
@@ -22,8 +24,7 @@ uint64_t mix(uint64_t key) {
 }  // namespace
 
 bool isPackable(const geometry::Cell& cell) {
-  auto fits = [](int32_t v) { return v >= -kLimit && v < kLimit; };
-  return fits(cell.x) && fits(cell.y) && fits(cell.z);
+  return inCoordinateRange(cell);
 }
 
 uint64_t packCell(const geometry::Cell& cell) {

@@ -24,6 +24,8 @@ class Occupancy {
       const int64_t slot = denseSlot(cell);
       return slot < 0 ? kEmpty : dense_[static_cast<size_t>(slot)];
     }
+    // A cell beyond the coordinate range would alias a cell at the other end once packed.
+    if (!isPackable(cell)) return kEmpty;
     const auto found = sparseIndex_.find(packCell(cell));
     return found ? *found : kEmpty;
   }

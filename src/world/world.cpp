@@ -79,12 +79,12 @@ Status World::add(const Module& module) {
   const std::string name = "module " + std::to_string(module.id.value);
   if (module.id.value == 0) return Error{"module id 0 is reserved; ids start at 1"};
   if (slotOf(module.id) != kNotFound) return Error{name + ": id already in use"};
-  if (!isPackable(module.cell)) {
-    return Error{name + ": cell " + toString(module.cell) + " is beyond +-1048576"};
+
+  if (modules_.size() >= kMaxModules) {
+    return Error{name + ": the world holds its limit of 200,000,000 modules"};
   }
   if (!bounds_.contains(module.cell)) {
-    return Error{name + ": cell " + toString(module.cell) + " is outside the world" +
-                 (module.cell.z < 0 ? " (below the ground, z < 0)" : " (outside the grid)")};
+    return Error{name + ": cell " + toString(module.cell) + " " + bounds_.whyOutside(module.cell)};
   }
   if (const Module* other = moduleAt(module.cell)) {
     return Error{name + ": cell " + toString(module.cell) + " is already occupied by module " +

@@ -224,3 +224,45 @@ describe('parseTrace on a run with concurrent motions (walkers)', () => {
     }
   });
 });
+
+// The table of bad traces that `datomsim view` is held to as well (tests/unit/export): both
+// readers refuse the same traces with the same message and line.
+describe('the shared table of trace cases', async () => {
+  const { readFileSync } = await import('node:fs');
+  const { fileURLToPath } = await import('node:url');
+  const here = (name) => fileURLToPath(new URL(`./fixtures/${name}`, import.meta.url));
+  const table = JSON.parse(readFileSync(here('trace-cases.json'), 'utf8'));
+  const base = readFileSync(here(table.base), 'utf8');
+
+  // The case's trace: the base's values, one changed or one added, one value per line.
+  function traceOf(testCase) {
+    const values = splitJsonValues(base).map((v) => v.value);
+    if (testCase.set) {
+      const [path, value] = testCase.set;
+      let at = values[testCase.value];
+      for (const key of path.slice(0, -1)) at = at[key];
+      const last = path[path.length - 1];
+      if (value === null && Array.isArray(at)) at.splice(last, 1);
+      else if (value === null) delete at[last];
+      else at[last] = value;
+    }
+    if (testCase.append) values.push(testCase.append);
+    return values.map((v) => JSON.stringify(v)).join('\n') + '\n';
+  }
+
+  for (const testCase of table.cases) {
+    it(testCase.name, () => {
+      const text = traceOf(testCase);
+      if (testCase.error === null) {
+        assert.doesNotThrow(() => parseTrace(text));
+        return;
+      }
+      const [line, message] = testCase.error;
+      assert.throws(() => parseTrace(text), (error) => {
+        assert.ok(error instanceof TraceError, String(error));
+        assert.equal(error.message, `line ${line}: ${message}`);
+        return true;
+      });
+    });
+  }
+});

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "common/atomic_file.h"
 #include "io/scene_file.h"
@@ -102,10 +105,14 @@ TEST(CheckTrace, AcceptsAHeaderSpreadOverSeveralLines) {
 TEST(CheckTrace, NamesTheFileAndLineOfWhatIsWrong) {
   EXPECT_EQ(checkTrace("", "a.jsonl").error(), "a.jsonl: the trace is empty");
   EXPECT_EQ(checkTrace("{\"format\":\"datomsim-scene\"}\n", "a.jsonl").error(),
-            "a.jsonl:1: not a datomsim trace (the header's \"format\" must be \"datomsim-trace\")");
+            "a.jsonl:1: not a datomsim trace: the header's \"format\" is \"datomsim-scene\", "
+            "expected \"datomsim-trace\"");
   EXPECT_EQ(checkTrace("{\"format\":\"datomsim-trace\",\"version\":2}\n", "a.jsonl").error(),
             "a.jsonl:1: unsupported trace version 2: this viewer reads version 1");
-  const std::string header = "{\"format\":\"datomsim-trace\",\"version\":1}\n";
+  // The simulator's own header, then bad changes (every other check of the header is in the
+  // table of cases the viewer shares: TraceCases below).
+  const std::string written = smallTrace();
+  const std::string header = written.substr(0, written.find('\n') + 1);
   EXPECT_EQ(checkTrace(header + "{\"t\":1}\n{\"t\":}\n", "a.jsonl").error(),
             "a.jsonl:3: invalid JSON");
   EXPECT_EQ(checkTrace(header + "{\"note\":\"x\"}\n", "a.jsonl").error(),
@@ -221,6 +228,92 @@ TEST(WriteViewerPage, WritesThePageOrNothing) {
   EXPECT_EQ(testing::readText(directory.path() / "p.html"), *viewerHtml(kBundle, page));
   EXPECT_FALSE(writeViewerPage(directory.path() / "q.html", "</script>", page).ok());
   EXPECT_EQ(directory.fileNames(), std::vector<std::string>{"p.html"});
+}
+
+}  // namespace
+}  // namespace datomsim::exporting
+
+namespace datomsim::exporting {
+namespace {
+
+// The table of bad traces the viewer's tests read too (viewer/test/trace.test.js): `datomsim
+// view` refuses the same traces as the page, with the same message and line.
+nlohmann::json traceCases() {
+  std::ifstream file(std::string(DATOMSIM_SOURCE_DIR) + "/viewer/test/fixtures/trace-cases.json");
+  return nlohmann::json::parse(file);
+}
+
+// The case's trace: the base's values, one changed or one added, one value per line.
+std::string traceOf(const nlohmann::json& testCase, const std::string& base) {
+  std::vector<nlohmann::json> values;
+  std::istringstream in(base);
+  nlohmann::json value;
+  for (std::string text((std::istreambuf_iterator<char>(in)), {}); !text.empty();) {
+    // Values may spread over lines: parse them one after another.
+    size_t end = 0;
+    int depth = 0;
+    bool inString = false;
+    for (; end < text.size(); ++end) {
+      const char c = text[end];
+      if (inString) {
+        if (c == '\\')
+          ++end;
+        else if (c == '"')
+          inString = false;
+      } else if (c == '"') {
+        inString = true;
+      } else if (c == '{' || c == '[') {
+        ++depth;
+      } else if ((c == '}' || c == ']') && --depth == 0) {
+        break;
+      }
+    }
+    values.push_back(nlohmann::json::parse(text.substr(0, end + 1)));
+    text = text.substr(std::min(text.size(), end + 1));
+    text.erase(0, std::min(text.size(), text.find_first_not_of(" \n\r\t")));
+  }
+  if (testCase.contains("set")) {
+    const auto& path = testCase["set"][0];
+    const auto& replacement = testCase["set"][1];
+    nlohmann::json* at = &values[testCase["value"].get<size_t>()];
+    for (size_t i = 0; i + 1 < path.size(); ++i) {
+      at = path[i].is_number() ? &(*at)[path[i].get<size_t>()] : &(*at)[path[i].get<std::string>()];
+    }
+    const auto& last = path.back();
+    if (replacement.is_null() && last.is_number()) {
+      at->erase(last.get<size_t>());
+    } else if (replacement.is_null()) {
+      at->erase(last.get<std::string>());
+    } else if (last.is_number()) {
+      (*at)[last.get<size_t>()] = replacement;
+    } else {
+      (*at)[last.get<std::string>()] = replacement;
+    }
+  }
+  if (testCase.contains("append")) values.push_back(testCase["append"]);
+  std::string text;
+  for (const auto& v : values) text += v.dump() + "\n";
+  return text;
+}
+
+TEST(TraceCases, ViewRefusesWhatTheViewerRefusesWithTheSameMessageAndLine) {
+  const nlohmann::json table = traceCases();
+  std::ifstream baseFile(std::string(DATOMSIM_SOURCE_DIR) + "/viewer/test/fixtures/" +
+                         table["base"].get<std::string>());
+  const std::string base((std::istreambuf_iterator<char>(baseFile)), {});
+  ASSERT_GE(table["cases"].size(), 20u);
+  for (const auto& testCase : table["cases"]) {
+    const std::string name = testCase["name"];
+    const auto checked = checkTrace(traceOf(testCase, base), "case.jsonl");
+    if (testCase["error"].is_null()) {
+      EXPECT_TRUE(checked.ok()) << name << ": " << checked.error();
+      continue;
+    }
+    ASSERT_FALSE(checked.ok()) << name;
+    EXPECT_EQ(checked.error(), "case.jsonl:" + std::to_string(testCase["error"][0].get<int>()) +
+                                   ": " + testCase["error"][1].get<std::string>())
+        << name;
+  }
 }
 
 }  // namespace

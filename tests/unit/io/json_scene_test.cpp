@@ -265,7 +265,8 @@ TEST(JsonScene, RefusesCellsOutsideTheGridOrBelowTheGround) {
   EXPECT_EQ(errorOf(withModules("{\"cell\":[0,0,-1]}", "null")),
             "box.json: modules[0].cell: cell 0,0,-1 is below the ground (z < 0)");
   EXPECT_EQ(errorOf(withModules("{\"cell\":[2000000,0,0]}", "null")),
-            "box.json: modules[0]: module 1: cell 2000000,0,0 is beyond +-1048576");
+            "box.json: modules[0].cell: cell 2000000,0,0 is outside the supported coordinate "
+            "range (-1048576 to 1048575)");
 }
 
 TEST(JsonScene, StreamAndTextReadersAgree) {

@@ -1,0 +1,187 @@
+// Bad input as a hostile user gives it: every case ends with a message naming the file, line,
+// option or value, exit status 1, and no output left behind as if it were good.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <tuple>
+
+#include "command_line.h"
+
+namespace datomsim {
+namespace {
+
+using testing::readText;
+
+class BadInput : public CommandLine {
+ protected:
+  void write(const std::string& name, const std::string& text) {
+    std::ofstream(path(name), std::ios::binary) << text;
+  }
+  std::string box() {
+    if (!std::filesystem::exists(path("box.json"))) {
+      EXPECT_EQ(datomsim("generate box --size 3,2,2 -o " + path("box.json")).status, 0);
+    }
+    return path("box.json");
+  }
+  // Runs a command that must fail with `message` in its output and leave `output` unwritten.
+  void refused(const std::string& arguments, const std::string& message,
+               const std::string& output = "") {
+    const Outcome outcome = datomsim(arguments);
+    EXPECT_EQ(outcome.status, 1) << arguments << "\n" << outcome.output;
+    EXPECT_NE(outcome.output.find(message), std::string::npos)
+        << arguments << "\nexpected: " << message << "\ngot: " << outcome.output;
+    if (!output.empty()) {
+      EXPECT_FALSE(std::filesystem::exists(output)) << arguments;
+    }
+  }
+};
+
+TEST_F(BadInput, DeeplyNestedJsonIsRefusedWithoutExhaustingTheStack) {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  write("scene.json",
+        R"({"format":"datomsim-scene","version":1,"name":)" + deep + R"(,"modules":[]})");
+  refused("info " + path("scene.json"), "scene.json: name: values nested deeper than 32 levels");
+  write("module.json",
+        R"({"format":"datomsim-scene","version":1,"modules":[{"cell":)" + deep + "}]}");
+  refused("info " + path("module.json"), "values nested deeper than 32 levels");
+  write("reach.json", R"({"distances":)" + deep + "}");
+  refused("view " + box() + " --reach " + path("reach.json") + " -o " + path("page.html"),
+          "reach.json:1: values nested deeper than 32 levels", path("page.html"));
+  write("trace.jsonl", readText(box()) + "\n");  // not a trace; nested values below it
+  const Outcome run =
+      datomsim("run " + box() + " --program flood --root 0,0,0 --trace " + path("good.jsonl"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  write("deep.jsonl", readText(path("good.jsonl")) + R"({"t":1,"note":)" + deep + "}\n");
+  refused("view " + path("deep.jsonl") + " -o " + path("deep.html"),
+          "values nested deeper than 32 levels", path("deep.html"));
+}
+
+TEST_F(BadInput, MalformedXmlIsRefusedNamingTheLine) {
+  ASSERT_EQ(datomsim("generate box --size 2,1,1 -o " + path("s.xml")).status, 0);
+  const std::string good = readText(path("s.xml"));
+  const std::pair<std::string, std::string> cases[] = {
+      {"a&b", "\"&b\" is no character reference: write & as &amp;"},
+      {"a&foo;b", "\"&foo;\" is no character reference"},
+      {"a&#0;b", "\"&#0;\" is no character reference"},
+      {"a&#xFFFFFFFF;b", "\"&#xFFFFFFFF;\" is no character reference"},
+      {"x&lt", "\"&lt\" is no character reference"},
+      {"a\x01z", "control character U+0001 is not allowed"},
+  };
+  for (const auto& [name, message] : cases) {
+    std::string text = good;
+    const size_t at = text.find("name=\"") + 6;
+    text.replace(at, text.find('"', at) - at, name);
+    write("bad.xml", text);
+    refused("convert " + path("bad.xml") + " -o " + path("bad.json"),
+            "bad.xml:2: malformed XML: " + message, path("bad.json"));
+  }
+  // What is well formed still reads, references and all.
+  std::string text = good;
+  text.replace(text.find("name=\"") + 6, 9, "a&amp;b&#x41;&#66;");
+  write("fine.xml", text);
+  ASSERT_EQ(datomsim("convert " + path("fine.xml") + " -o " + path("fine.json")).status, 0);
+  EXPECT_NE(readText(path("fine.json")).find("\"name\": \"a&bAB\""), std::string::npos);
+}
+
+TEST_F(BadInput, TextXmlCannotHoldIsRefusedRatherThanCutOrWrittenRaw) {
+  // tinyxml2 would end the name at the NUL, and write U+0001 raw (no XML reader takes it back).
+  for (const auto& [field, escaped, code] : {std::tuple{"name", "a\\u0000b", "U+0000"},
+                                             std::tuple{"description", "x\\u0001", "U+0001"}}) {
+    write("text.json", std::string(R"({"format":"datomsim-scene","version":1,")") + field +
+                           R"(":")" + escaped + R"(","modules":[{"cell":[0,0,0]}]})");
+    refused("convert " + path("text.json") + " -o " + path("text.xml"),
+            std::string("the scene's ") + field + " holds the control character " + code +
+                ", which XML cannot hold",
+            path("text.xml"));
+  }
+  // Tabs and line feeds are text XML holds: the round trip keeps them.
+  write("tab.json", R"({"format":"datomsim-scene","version":1,"name":"a\tb\nc","modules":[]})");
+  ASSERT_EQ(datomsim("convert " + path("tab.json") + " -o " + path("tab.xml")).status, 0);
+  ASSERT_EQ(datomsim("convert " + path("tab.xml") + " -o " + path("back.json")).status, 0);
+  EXPECT_NE(readText(path("back.json")).find(R"("name": "a\tb\nc")"), std::string::npos)
+      << readText(path("back.json"));
+}
+
+TEST_F(BadInput, SizesBeyondTheLimitsAreRefusedUpFront) {
+  refused("generate box --size 60000,60000,1 -o " + path("huge.json"),
+          "a box of 60000,60000,1 is 3600000000 modules; a world holds at most 200000000",
+          path("huge.json"));
+  refused("generate random --count 300000000 -o " + path("r.json"),
+          "random scene: 300000000 modules; a world holds at most 200000000", path("r.json"));
+  refused("generate reshape pyramid --side 20000 -o " + path("p.json"),
+          "is more modules than a world holds", path("p.json"));
+  // A device is no scene file: it would be read until memory runs out.
+  refused("info /dev/zero", "");
+  std::filesystem::create_symlink("/dev/zero", path("zero.xml"));
+  refused("info " + path("zero.xml"), "zero.xml: is not a regular file");
+}
+
+TEST_F(BadInput, CoordinatesOutsideTheSupportedRangeAreRefusedAtEveryEntry) {
+  refused("generate box --size 3,1,1 --origin 2147483646,0,0 -o " + path("e.json"),
+          "--origin \"2147483646,0,0\": 2147483646 is outside the supported coordinate range, "
+          "-1048576 to 1048575",
+          path("e.json"));
+  refused("generate box --size 3,1,1 --origin 1048574,0,0 -o " + path("e.json"),
+          "leaves the supported coordinate range", path("e.json"));
+  refused("reach " + box() + " --goal 1048576,0,0", "is outside the supported coordinate range");
+  write("far.json",
+        R"({"format":"datomsim-scene","version":1,"modules":[{"cell":[1048576,0,0]}]})");
+  refused("info " + path("far.json"), "is outside the supported coordinate range");
+  // Modules at both ends of the range are far apart, not neighbours (their packed keys would
+  // alias if a cell beyond the range were looked up).
+  write("ends.json", R"({"format":"datomsim-scene","version":1,"modules":[)"
+                     R"({"cell":[1048575,0,0]},{"cell":[-1048576,0,0]},)"
+                     R"({"cell":[0,1048575,100]},{"cell":[0,-1048576,0]}]})");
+  const Outcome info = datomsim("info " + path("ends.json"));
+  ASSERT_EQ(info.status, 0) << info.output;
+  EXPECT_NE(info.output.find("components  4"), std::string::npos) << info.output;
+}
+
+TEST_F(BadInput, NumbersThatAreNotFiniteAndSeedsOutOfRangeAreRefused) {
+  const std::string run = "run " + box() + " --program flood --root 0,0,0 ";
+  refused(run + "--delay-ms nan", "--delay-ms: must be a finite number >= 0, got nan");
+  refused(run + "--jitter-ms inf", "--jitter-ms: must be a finite number >= 0, got inf");
+  refused(run + "--until -1", "--until: must be a finite number > 0, got -1");
+  refused(run + "--seed 99999999999999999999999",
+          "--seed \"99999999999999999999999\" must be an integer from 0 to 18446744073709551615");
+  refused(run + "--seed -1", "--seed \"-1\" must be an integer");
+  refused("geometry --radius 1e308", "radius must lie between 1e-12 and 1e12, got 1e+308");
+  refused("geometry --radius nan", "--radius: must be a finite number, got nan");
+  refused("generate random --count 5 --seed 1e3 -o " + path("r.json"), "--seed \"1e3\"",
+          path("r.json"));
+}
+
+TEST_F(BadInput, AnOutputThatWouldOverwriteAnInputOrAnotherOutputIsRefused) {
+  const std::string scene = box();
+  const std::string before = readText(scene);
+  refused("reach " + scene + " --goal 0,0,2 --out " + scene,
+          "--out " + scene + " would overwrite the scene it reads");
+  refused("run " + scene + " --program flood --root 0,0,0 --trace " + scene,
+          "--trace " + scene + " would overwrite the scene it reads");
+  refused(
+      "run " + scene + " --program flood --root 0,0,0 --trace " + path("x") + " --out " + path("x"),
+      "--out and --trace both name", path("x"));
+  refused("run " + scene + " --program flood --root 0,0,0 --trace -",
+          "--out and --trace would both write to standard output");
+  refused("convert " + scene + " -o " + path(".") + "/box.json", "would overwrite the scene");
+  refused("generate box --size 2,2,2 -o " + path("t.json") + " --target " + path("t.json"),
+          "would overwrite the --target it reads");
+  refused("reach " + scene + " --goal 0,0,2 --png " + path("p.png") + " --svg " + path("./p.png"),
+          "--png and --svg both name", path("p.png"));
+  EXPECT_EQ(readText(scene), before);
+}
+
+TEST_F(BadInput, CommandLineMistakesExitOneAndAnUnknownSubcommandIsNamed) {
+  refused("rnu " + box(), "unknown subcommand \"rnu\"; did you mean \"run\"?");
+  refused("frobnicate", "unknown subcommand \"frobnicate\"; the subcommands are geometry,");
+  refused("", "A subcommand is required");
+  refused("info --bogus " + box(), "The following argument was not expected: --bogus");
+  refused("run " + box(), "--program is required");
+  EXPECT_EQ(datomsim("--version").status, 0);
+  EXPECT_EQ(datomsim("run --help").status, 0);
+}
+
+}  // namespace
+}  // namespace datomsim

@@ -98,14 +98,41 @@ std::string describe(const Refusal& refusal) {
   return head;
 }
 
+namespace {
+
+// Whether the module is latched towards direction d, counting latches that `compressions` let go
+// as made (Compressions).
+bool latchedBefore(const World& world, const Module& module, int d, Compressions compressions) {
+  if (world.isLatched(module, d)) return true;
+  if (compressions.empty()) return false;
+  const Module* other = world.neighbour(module, d);
+  if (!other) return false;
+  for (const auto& [id, axis] : compressions) {
+    if (id == module.id && geometry::axisMovesDirection(axis, d)) return true;
+    if (id == other->id && geometry::axisMovesDirection(axis, geometry::oppositeDirection(d))) {
+      return true;
+    }
+  }
+  return false;
+}
+
 bool staysAttached(const World& world, const Module& module, int axis,
-                   std::optional<ModuleId> mobile) {
+                   std::optional<ModuleId> mobile, Compressions compressions) {
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
-    if (geometry::axisMovesDirection(axis, d) || !world.isLatched(module, d)) continue;
+    if (geometry::axisMovesDirection(axis, d) || !latchedBefore(world, module, d, compressions)) {
+      continue;
+    }
     const Module* other = world.neighbour(module, d);
     if (other && (!mobile || other->id != *mobile)) return true;
   }
   return false;
+}
+
+}  // namespace
+
+bool staysAttached(const World& world, const Module& module, int axis,
+                   std::optional<ModuleId> mobile) {
+  return staysAttached(world, module, axis, mobile, {});
 }
 
 namespace {
@@ -125,7 +152,8 @@ using DeformingGroup = std::array<DeformingModule, std::tuple_size_v<decltype(Ru
 // each other would fall away together. Returns the index of the first module that holds to
 // nothing and the piston at fault, or nullopt when the whole group holds.
 std::optional<std::pair<int, int>> groupLetsGo(const World& world, const DeformingGroup& group,
-                                               int size, std::optional<ModuleId> mobile) {
+                                               int size, std::optional<ModuleId> mobile,
+                                               Compressions compressions = {}) {
   auto indexOf = [&](const Module* module) {
     for (int i = 0; i < size; ++i) {
       if (group[i].module == module) return i;
@@ -151,7 +179,10 @@ std::optional<std::pair<int, int>> groupLetsGo(const World& world, const Deformi
         if (axis < 0 || holds[i][k]) continue;
         const Module& module = *group[i].module;
         for (int d = 0; d < geometry::kDirectionCount && !holds[i][k]; ++d) {
-          if (geometry::axisMovesDirection(axis, d) || !world.isLatched(module, d)) continue;
+          if (geometry::axisMovesDirection(axis, d) ||
+              !latchedBefore(world, module, d, compressions)) {
+            continue;
+          }
           const Module* other = world.neighbour(module, d);
           if (!other || (mobile && other->id == *mobile)) continue;
           const int j = indexOf(other);
@@ -203,7 +234,8 @@ std::vector<uint32_t> cutOffByMotion(const World& world, const Rule& rule, const
 // modules that must deform when it holds. Written for the hot loop of reachability: no
 // allocation unless a deformation list is asked for.
 bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mobile& mobile,
-           const RuleOptions& options, Refusal* refusal, std::vector<Deformation>* deformations) {
+           const RuleOptions& options, Refusal* refusal, std::vector<Deformation>* deformations,
+           Compressions compressions = {}) {
   auto refuse = [&](CellRole role, const Cell& cell, RefusalReason reason, const Module* blocker,
                     int axis = -1) {
     if (refusal) {
@@ -239,7 +271,7 @@ bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mo
     }
     if (options.attachment) {
       for (const int axis : {need.firstAxis, need.secondAxis}) {
-        if (axis >= 0 && !staysAttached(world, *module, axis, mobile.module)) {
+        if (axis >= 0 && !staysAttached(world, *module, axis, mobile.module, compressions)) {
           return refuse(need.role, cell, RefusalReason::kWouldLetGo, module, axis);
         }
       }
@@ -248,7 +280,7 @@ bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mo
   }
   // One module alone was judged above; a group can still let go as a whole.
   if (options.attachment && groupSize >= 2) {
-    if (const auto lets = groupLetsGo(world, group, groupSize, mobile.module)) {
+    if (const auto lets = groupLetsGo(world, group, groupSize, mobile.module, compressions)) {
       const DeformingModule& d = group[lets->first];
       return refuse(d.need->role, d.cell, RefusalReason::kGroupWouldLetGo, d.module, lets->second);
     }
@@ -311,7 +343,7 @@ const Module* realMobile(const World& world, const Mobile& mobile) {
 }  // namespace
 
 Evaluation evaluate(const World& world, const Rule& rule, const Mobile& mobile,
-                    const RuleOptions& options) {
+                    const RuleOptions& options, Compressions compressions) {
   const Cell pivotCell = mobile.cell - rule.mobileOffset;
   const Module* pivot = world.moduleAt(pivotCell);
   Refusal refusal;
@@ -325,7 +357,8 @@ Evaluation evaluate(const World& world, const Rule& rule, const Mobile& mobile,
     }
   }
   Motion motion;
-  if (!check(world, rule, pivotCell, mobile, options, &refusal, &motion.deformations)) {
+  if (!check(world, rule, pivotCell, mobile, options, &refusal, &motion.deformations,
+             compressions)) {
     return refusal;
   }
   motion.rule = &rule;

@@ -36,10 +36,16 @@ inline const world::Module* fixedModuleAt(const world::World& world, const geome
   return module;
 }
 
+// Pistons compressed for a motion about to start, each (module, world axis). When the motion is
+// judged again then, the latches these compressions let go count as made: the attachment check
+// judges the world as it was before the modules deformed, as when the motion was chosen (a
+// double deformation's first piston, say, is released before its second is compressed).
+using Compressions = std::span<const std::pair<ModuleId, int>>;
+
 // Evaluates one rule for a mobile and a pivot at `mobile.cell - rule.mobileOffset`. Precondition:
 // the pivot cell holds a fixed module (fixedModuleAt).
 Evaluation evaluate(const world::World& world, const Rule& rule, const Mobile& mobile,
-                    const RuleOptions& options);
+                    const RuleOptions& options, Compressions compressions = {});
 
 // Whether one rule holds, without building the motion: the hot path of reachability.
 // Precondition as for evaluate.

@@ -178,8 +178,21 @@ MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& reques
     refused.module = pivot->id;
     return refuse(index, std::move(refused));
   }
+  // Judged as when it was chosen: the latches its own helpers' compressions let go count as made
+  // (motion::Compressions); a double deformation's second piston, say, is compressed only after
+  // the first is back and latched again.
+  std::vector<std::pair<ModuleId, int>> compressions;
+  for (const motion::Deformation& d : request.deformations) {
+    const auto helper = world_.indexOf(d.module);
+    if (!helper) continue;
+    const Mechanics::Pistons& pistons = mechanics_.pistons(*helper);
+    if (pistons.piston >= 0) {
+      compressions.push_back(
+          {d.module, world_.modules()[*helper].orientation.worldAxis(pistons.piston)});
+    }
+  }
   const motion::Evaluation judged =
-      motion::evaluate(world_, *request.rule, {mobile.cell, mobile.id}, rules_);
+      motion::evaluate(world_, *request.rule, {mobile.cell, mobile.id}, rules_, compressions);
   if (const auto* ruleRefusal = std::get_if<motion::Refusal>(&judged)) {
     MoveRefusal refused = refusal(MoveRefusal::Reason::kRule, motion::describe(*ruleRefusal));
     refused.cell = ruleRefusal->cell;

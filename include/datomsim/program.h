@@ -80,7 +80,8 @@ class DATOMSIM_API Context {
   // Connectors are numbered 0..11 in the module's own frame. Bit i set: connector i is latched.
   virtual uint16_t latchedConnectors() const = 0;
   bool latched(int connector) const { return (latchedConnectors() >> connector) & 1; }
-  // The cell on the other side of one of the module's own connectors.
+  // The cell on the other side of one of the module's own connectors (0..11; any other number
+  // throws std::out_of_range, which stops the run with its message).
   virtual Cell cellBehind(int connector) const = 0;
 
   // Sends a message through a latched connector; it arrives after the run's message delay, and
@@ -103,7 +104,8 @@ class DATOMSIM_API Context {
   virtual Status release() = 0;
   // The own piston compressed or moving, or -1.
   virtual int compressedPiston() const = 0;
-  // The own piston along a world axis (what a Helper's axis names).
+  // The own piston along a world axis 0..5 (what a Helper's axis names; another number throws
+  // std::out_of_range).
   virtual int pistonAlong(int worldAxis) const = 0;
 
   // The motions this module can make now as the mobile, judged on the world as it is.

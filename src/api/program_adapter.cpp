@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
 #include <variant>
 
 namespace datomsim::api {
@@ -39,7 +40,10 @@ class ContextAdapter final : public Context {
   std::optional<bool> occupied(const Cell& cell) const override { return context_.occupied(cell); }
   uint16_t latchedConnectors() const override { return context_.latchedConnectors(); }
   Cell cellBehind(int connector) const override {
-    if (connector < 0 || connector >= 12) return context_.cell();
+    if (connector < 0 || connector >= 12) {
+      throw std::out_of_range(fmt::format("module {}: there is no connector {} (0 to 11)",
+                                          context_.id().value, connector));
+    }
     return context_.cellBehind(connector);
   }
   Status send(int connector, const Message& message) override {
@@ -59,7 +63,10 @@ class ContextAdapter final : public Context {
   Status release() override { return context_.release(); }
   int compressedPiston() const override { return context_.compressedPiston(); }
   int pistonAlong(int worldAxis) const override {
-    if (worldAxis < 0 || worldAxis >= 6) return -1;
+    if (worldAxis < 0 || worldAxis >= 6) {
+      throw std::out_of_range(fmt::format("module {}: there is no world axis {} (0 to 5)",
+                                          context_.id().value, worldAxis));
+    }
     return context_.orientation().ownPiston(worldAxis);
   }
   std::vector<Motion> motions() const override {

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <string_view>
 
 #include "algorithms/follow_gradient.h"
 #include "algorithms/registry.h"
@@ -67,6 +69,33 @@ Status checkCellParameters(const world::World& world, const ProgramEntry& entry,
 }
 
 }  // namespace
+
+bool isRunOutputKey(std::string_view key) {
+  static constexpr std::array<std::string_view, 23> kKeys = {"program",
+                                                             "parameters",
+                                                             "stopped_at_limit",
+                                                             "success",
+                                                             "reason",
+                                                             "final",
+                                                             "missing",
+                                                             "extra",
+                                                             "walkers",
+                                                             "distances",
+                                                             "path",
+                                                             "motions",
+                                                             "makespan_s",
+                                                             "messages",
+                                                             "max_concurrent_motions",
+                                                             "mean_concurrent_motions",
+                                                             "refusals_by_reason",
+                                                             "reservation_wait_s",
+                                                             "messages_by_type",
+                                                             "events",
+                                                             "events_by_kind",
+                                                             "deformations",
+                                                             "sim_time_s"};
+  return std::find(kKeys.begin(), kKeys.end(), key) != kKeys.end();
+}
 
 Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
                              const RunRequest& request) {
@@ -183,6 +212,14 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   }
   result.walkers = (*programs)->walkers();
   result.reports = (*programs)->reports([&](ModuleId id) { return ended.find(id)->cell; });
+  for (const algorithms::ReportedValues& reported : result.reports) {
+    if (isRunOutputKey(reported.key)) {
+      return Error{
+          fmt::format("program {} reports \"{}\", a key the run's output uses itself; "
+                      "report it under another name",
+                      request.program, reported.key)};
+    }
+  }
   if (request.trace) {
     trace.footer(simulator.now(), summaryJson(result.statistics));
     result.trace = trace.text();

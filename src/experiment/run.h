@@ -10,6 +10,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -64,6 +65,10 @@ struct RunResult {
   sim::Statistics statistics;
   std::string trace;  // JSON Lines, when asked for
 };
+
+// The keys of a run's JSON output (`run --out`, docs/file-formats.md), which a program's report
+// may not take.
+bool isRunOutputKey(std::string_view key);
 
 // Refuses a goal or start outside the world, an unknown program, bad parameters (and cell
 // parameters outside the world, or empty where the program needs a module), follow-gradient without

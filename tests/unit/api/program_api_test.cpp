@@ -184,6 +184,27 @@ TEST(ProgramApi, ABadParameterStopsTheRunBeforeItStartsNamingTheKey) {
   EXPECT_EQ(empty.error(), "parameter second of program duel: cell 5,5,1 holds no module");
 }
 
+// A program that reports under a key of the run's own output.
+class ReportsMotions final : public Program {
+ public:
+  void onStart(Context&) override {}
+  void report(Report& report) const override { report.set("motions", 1); }
+};
+
+TEST(ProgramApi, AReportMayNotTakeAKeyOfTheRunsOutput) {
+  std::vector<ProgramEntry> added(1);
+  added[0].name = "reporter";
+  added[0].make = [](ModuleId, const Parameters&) { return std::make_unique<ReportsMotions>(); };
+  experiment::RunRequest request;
+  request.program = "reporter";
+  request.added = added;
+  const auto run = experiment::runProgram(floorWith({1, 2, 1}, {3, 2, 1}), table(), request);
+  ASSERT_FALSE(run.ok());
+  EXPECT_EQ(run.error(),
+            "program reporter reports \"motions\", a key the run's output uses itself; report it "
+            "under another name");
+}
+
 TEST(ProgramApi, AddedProgramsMayNotTakeABuiltInNameOrOneTwice) {
   Seen seen;
   ProgramEntry flood = duelEntry(seen);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <stdexcept>
 
 #include "algorithms/flood.h"
 #include "algorithms/follow_gradient.h"
@@ -122,7 +123,12 @@ class EntryPrograms final : public ProgramSet {
   }
 
   std::unique_ptr<program::ModuleProgram> make(ModuleId id) override {
-    auto program = std::make_unique<api::ProgramAdapter>(entry_.make(id, parameters_), parameters_);
+    std::unique_ptr<Program> made = entry_.make(id, parameters_);
+    if (!made) {
+      throw std::logic_error(
+          fmt::format("program {} made no program for module {}", entry_.name, id.value));
+    }
+    auto program = std::make_unique<api::ProgramAdapter>(std::move(made), parameters_);
     made_.push_back({id, program.get()});
     return program;
   }

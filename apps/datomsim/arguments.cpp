@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "world/bounds.h"
@@ -55,18 +56,29 @@ uint64_t parseSeed(const std::string& option, const std::string& text) {
 }
 
 geometry::Cell parseCell(const std::string& option, const std::string& text) {
+  // "6,5,2", also as the pictures' titles print it, "(6,5,2)", and with spaces: "6, 5, 2".
+  auto trim = [](std::string_view s) {
+    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+    while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
+    return s;
+  };
+  std::string_view rest = trim(text);
+  if (rest.size() >= 2 && rest.front() == '(' && rest.back() == ')') {
+    rest = rest.substr(1, rest.size() - 2);
+  }
   std::vector<int32_t> values;
-  const char* begin = text.data();
-  const char* end = text.data() + text.size();
-  while (begin <= end) {
+  for (bool more = true; more;) {
+    const size_t comma = rest.find(',');
+    more = comma != std::string_view::npos;
+    const std::string_view part = trim(rest.substr(0, comma));
+    rest = more ? rest.substr(comma + 1) : std::string_view();
     int32_t value = 0;
-    const auto [next, error] = std::from_chars(begin, end, value);
-    if (error != std::errc() || (next != end && *next != ',')) {
+    const auto [next, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+    if (part.empty() || error != std::errc() || next != part.data() + part.size()) {
       values.clear();
       break;
     }
     values.push_back(value);
-    begin = next + 1;
   }
   if (values.size() != 3) {
     throw UsageError(option + " \"" + text + "\" must be three integers x,y,z");

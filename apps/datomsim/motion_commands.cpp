@@ -2,9 +2,13 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <cctype>
+#include <filesystem>
+#include <tuple>
 
 #include "arguments.h"
 #include "commands.h"
+#include "geometry/lattice.h"
 #include "io/scene_file.h"
 #include "motion/bidirectionality.h"
 #include "motion/reach.h"
@@ -41,10 +45,32 @@ void addReach(CLI::App& app) {
     if (!args->png.empty()) outputs.push_back({"--png", args->png});
     if (!args->svg.empty()) outputs.push_back({"--svg", args->svg});
     refuseClashes({{"scene", args->scene}}, outputs);
+    // A picture's format is its option's: a file named otherwise would hold what its name
+    // does not say.
+    for (const auto& [option, path, extension] :
+         {std::tuple{"--png", args->png, ".png"}, std::tuple{"--svg", args->svg, ".svg"}}) {
+      std::string given = std::filesystem::path(path).extension().string();
+      for (char& c : given) c = char(std::tolower(static_cast<unsigned char>(c)));
+      if (!path.empty() && given != extension) {
+        throw UsageError(
+            fmt::format("{} {}: the picture's file name must end in {}", option, path, extension));
+      }
+    }
     const geometry::Cell goal = parseCell("--goal", args->goal);
     const motion::RuleOptions options = args->rules.options();
     io::Scene scene = unwrap(io::readScene(args->scene));
     motion::takeMobile(scene.world, goal);
+    // A goal next to no module is reached by nothing: say so rather than draw an empty map.
+    bool touches = false;
+    for (int d = 0; d < geometry::kDirectionCount && !touches; ++d) {
+      touches = scene.world.moduleAt(goal + geometry::neighbourOffset(d)) != nullptr;
+    }
+    if (!touches && scene.world.isInside(goal)) {
+      throw UsageError(
+          fmt::format("goal {} touches no module: no module can reach it (a goal "
+                      "must be next to a module of the scene)",
+                      geometry::toString(goal)));
+    }
     const motion::RuleTable table;
     const motion::DistanceMap map = unwrap(motion::reach(scene.world, table, goal, options));
 

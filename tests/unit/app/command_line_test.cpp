@@ -1,7 +1,9 @@
 // The command line as a user meets it: outputs other tools read, and every kind of bad input
 // refused with a message naming the value, a non-zero status and no output file.
 #include <gtest/gtest.h>
+
 #include <sys/wait.h>
+#include <filesystem>
 
 #include <array>
 #include <cstdio>
@@ -48,6 +50,44 @@ TEST_F(CommandLine, ReachWritesItsPictures) {
   const std::string svg = readText(path("map.svg"));
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_GT(svg.size(), 100000u);  // the cells, the path and the title's glyphs
+}
+
+// Cells as the pictures' titles print them, and with spaces, read as "x,y,z".
+TEST_F(CommandLine, ReadsCellsInParenthesesAndWithSpaces) {
+  const std::string scene = arch(2);
+  const std::string plain = datomsim("reach " + scene + " --goal 6,5,2").output;
+  for (const std::string spelling : {"\"(6,5,2)\"", "\"6, 5, 2\"", "\" ( 6 , 5 , 2 ) \""}) {
+    const Outcome reach = datomsim("reach " + scene + " --goal " + spelling);
+    EXPECT_EQ(reach.status, 0) << spelling << reach.output;
+    EXPECT_EQ(reach.output, plain) << spelling;
+  }
+  for (const std::string bad : {"6,5", "\"(6,5,2\"", "6,5,2,", "6,,5"}) {
+    const Outcome reach = datomsim("reach " + scene + " --goal " + bad);
+    EXPECT_EQ(reach.status, 1) << bad;
+    EXPECT_NE(reach.output.find("must be three integers x,y,z"), std::string::npos) << bad;
+  }
+}
+
+TEST_F(CommandLine, APicturesFileNameMustSayItsFormat) {
+  const Outcome png = datomsim("reach " + arch(2) + " --goal 6,5,2 --png " + path("map.jpg"));
+  EXPECT_EQ(png.status, 1);
+  EXPECT_NE(
+      png.output.find("--png " + path("map.jpg") + ": the picture's file name must end in .png"),
+      std::string::npos)
+      << png.output;
+  EXPECT_FALSE(std::filesystem::exists(path("map.jpg")));
+  const Outcome svg = datomsim("reach " + arch(2) + " --goal 6,5,2 --svg " + path("map.png"));
+  EXPECT_EQ(svg.status, 1);
+  EXPECT_FALSE(std::filesystem::exists(path("map.png")));
+}
+
+TEST_F(CommandLine, AGoalNextToNoModuleIsNamed) {
+  const Outcome reach = datomsim("reach " + arch(2) + " --goal 0,0,8 --out " + path("r.json"));
+  EXPECT_EQ(reach.status, 1);
+  EXPECT_NE(reach.output.find("goal 0,0,8 touches no module: no module can reach it"),
+            std::string::npos)
+      << reach.output;
+  EXPECT_FALSE(std::filesystem::exists(path("r.json")));
 }
 
 TEST_F(CommandLine, RefusesBadGeometryValuesNamingThem) {

@@ -1,8 +1,10 @@
 // `reach`, `moves` and `verify`: the motion rules from the command line.
 #include <fmt/format.h>
 
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <tuple>
 
@@ -92,7 +94,7 @@ void addReach(CLI::App& app) {
 
 void addMoves(CLI::App& app) {
   struct Arguments {
-    std::string scene, at, out;
+    std::string scene, at, out, format = "auto";
     RuleArguments rules;
   };
   auto args = std::make_shared<Arguments>();
@@ -102,6 +104,12 @@ void addMoves(CLI::App& app) {
   command->add_option("--at", args->at, "The mobile's cell x,y,z; a module there is the mobile")
       ->required();
   args->rules.addTo(*command);
+  command
+      ->add_option("--format", args->format,
+                   "table (for a person), json, or auto: a table on a terminal, JSON otherwise "
+                   "and always in --out files")
+      ->check(CLI::IsMember({"auto", "table", "json"}))
+      ->capture_default_str();
   addOutputOption(*command, args->out);
   command->callback([args] {
     refuseClashes({{"scene", args->scene}}, {{"--out", args->out}});
@@ -114,8 +122,10 @@ void addMoves(CLI::App& app) {
     const world::Module* mobile = scene.world.moduleAt(at);
     const motion::Mobile where{at, mobile ? std::optional(mobile->id) : std::nullopt};
     const motion::RuleTable table;
-    writeOutput(args->out, movesJson(at, motion::evaluateAll(scene.world, table, where,
-                                                             args->rules.options())));
+    const auto moves = motion::evaluateAll(scene.world, table, where, args->rules.options());
+    const bool toTerminal = (args->out.empty() || args->out == "-") && isatty(fileno(stdout));
+    const bool asTable = args->format == "table" || (args->format == "auto" && toTerminal);
+    writeOutput(args->out, asTable ? movesTable(at, moves) : movesJson(at, moves));
   });
 }
 

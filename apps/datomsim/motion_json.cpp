@@ -85,4 +85,40 @@ std::string movesJson(const Cell& at, const std::vector<motion::Evaluation>& mov
   return document.dump() + "\n";
 }
 
+std::string movesTable(const Cell& at, const std::vector<motion::Evaluation>& moves) {
+  std::string valid, refused;
+  size_t validCount = 0;
+  for (const motion::Evaluation& evaluation : moves) {
+    if (const auto* motion = std::get_if<motion::Motion>(&evaluation)) {
+      ++validCount;
+      std::string helpers;
+      for (const motion::Deformation& d : motion->deformations) {
+        helpers += fmt::format("{}{} compresses {}", helpers.empty() ? "" : "; ",
+                               geometry::toString(d.cell), d.firstAxis);
+        if (d.secondAxis >= 0) helpers += fmt::format(" then {}", d.secondAxis);
+      }
+      valid +=
+          fmt::format("  {:<11} {:>6}  {:<5}  {:<11} {}\n", geometry::toString(motion->pivotCell),
+                      motion->rule->up, motion::toString(motion->rule->turn),
+                      geometry::toString(motion->goal), helpers.empty() ? "no helper" : helpers);
+    } else {
+      const auto& refusal = std::get<motion::Refusal>(evaluation);
+      const motion::Rule& rule = *refusal.rule;
+      const Cell pivotCell = at - rule.mobileOffset;
+      refused +=
+          fmt::format("  {:<11} {:>6}  {:<5}  {:<11} {}\n", geometry::toString(pivotCell), rule.up,
+                      motion::toString(rule.turn), geometry::toString(pivotCell + rule.goalOffset),
+                      motion::describe(refusal));
+    }
+  }
+  const std::string header =
+      fmt::format("  {:<11} {:>6}  {:<5}  {}\n", "pivot", "piston", "turn", "goal");
+  std::string out = fmt::format("the module at {}: {} of {} rules hold\n", geometry::toString(at),
+                                validCount, moves.size());
+  if (validCount > 0)
+    out += "\nvalid (helpers compress the pistons along these world axes):\n" + header + valid;
+  if (validCount < moves.size()) out += "\nrefused:\n" + header + refused;
+  return out;
+}
+
 }  // namespace datomsim::app

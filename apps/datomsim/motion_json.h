@@ -20,4 +20,7 @@ std::string reachJson(const motion::DistanceMap& map, const std::vector<geometry
 
 std::string movesJson(const geometry::Cell& at, const std::vector<motion::Evaluation>& moves);
 
+// The same for a person: one line per rule, valid ones first, then the refused with their reason.
+std::string movesTable(const geometry::Cell& at, const std::vector<motion::Evaluation>& moves);
+
 }  // namespace datomsim::app

@@ -90,6 +90,26 @@ TEST_F(CommandLine, AGoalNextToNoModuleIsNamed) {
   EXPECT_FALSE(std::filesystem::exists(path("r.json")));
 }
 
+// `moves` for a person: a table (on a terminal, or with --format table); JSON for programs.
+TEST_F(CommandLine, MovesPrintsATableForAPersonAndJsonOtherwise) {
+  const std::string scene = arch(2);
+  const Outcome table = datomsim("moves " + scene + " --at 0,0,2 --format table");
+  ASSERT_EQ(table.status, 0) << table.output;
+  EXPECT_EQ(table.output.rfind("the module at 0,0,2: 5 of 6 rules hold\n", 0), 0u) << table.output;
+  EXPECT_NE(table.output.find("1,1,1            4  left   0,1,2       no helper"),
+            std::string::npos)
+      << table.output;
+  EXPECT_NE(table.output.find("1,1,1            2  left   1,0,1       1,1,0 compresses 4"),
+            std::string::npos)
+      << table.output;
+  EXPECT_NE(table.output.find("refused:\n"), std::string::npos);
+  EXPECT_NE(table.output.find("the goal 1,1,0 holds module 2"), std::string::npos);
+  // Not on a terminal (a pipe here), and in files: JSON, as before.
+  const Outcome piped = datomsim("moves " + scene + " --at 0,0,2");
+  ASSERT_EQ(piped.status, 0);
+  EXPECT_EQ(nlohmann::json::parse(piped.output)["moves"].size(), 6u);
+}
+
 TEST_F(CommandLine, RefusesBadGeometryValuesNamingThem) {
   for (const std::string arguments : {"--thickness 0.25", "--radius -1", "--fraction 1.5"}) {
     const Outcome outcome = datomsim("geometry " + arguments);

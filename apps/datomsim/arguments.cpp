@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "geometry/cell_text.h"
 #include "world/bounds.h"
 
 namespace datomsim::app {
@@ -56,34 +57,9 @@ uint64_t parseSeed(const std::string& option, const std::string& text) {
 }
 
 geometry::Cell parseCell(const std::string& option, const std::string& text) {
-  // "6,5,2", also as the pictures' titles print it, "(6,5,2)", and with spaces: "6, 5, 2".
-  auto trim = [](std::string_view s) {
-    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
-    while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
-    return s;
-  };
-  std::string_view rest = trim(text);
-  if (rest.size() >= 2 && rest.front() == '(' && rest.back() == ')') {
-    rest = rest.substr(1, rest.size() - 2);
-  }
-  std::vector<int32_t> values;
-  for (bool more = true; more;) {
-    const size_t comma = rest.find(',');
-    more = comma != std::string_view::npos;
-    const std::string_view part = trim(rest.substr(0, comma));
-    rest = more ? rest.substr(comma + 1) : std::string_view();
-    int32_t value = 0;
-    const auto [next, error] = std::from_chars(part.data(), part.data() + part.size(), value);
-    if (part.empty() || error != std::errc() || next != part.data() + part.size()) {
-      values.clear();
-      break;
-    }
-    values.push_back(value);
-  }
-  if (values.size() != 3) {
-    throw UsageError(option + " \"" + text + "\" must be three integers x,y,z");
-  }
-  for (const int32_t value : values) {
+  const std::optional<geometry::Cell> cell = geometry::cellFromText(text);
+  if (!cell) throw UsageError(option + " \"" + text + "\" must be three integers x,y,z");
+  for (const int32_t value : {cell->x, cell->y, cell->z}) {
     // Sizes reach the limit itself; cells stop one short (docs/limits.md).
     if (value < -world::kCoordinateLimit || value > world::kCoordinateLimit) {
       throw UsageError(
@@ -92,7 +68,7 @@ geometry::Cell parseCell(const std::string& option, const std::string& text) {
                       option, text, value, world::kCoordinateLimit, world::kCoordinateLimit - 1));
     }
   }
-  return {values[0], values[1], values[2]};
+  return *cell;
 }
 
 motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment,

@@ -6,20 +6,15 @@
 #include <stdexcept>
 
 #include "datomsim/parameters.h"
+#include "geometry/cell_text.h"
 
 namespace datomsim {
 
 namespace {
 
-std::string_view trimmed(std::string_view text) {
-  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
-  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
-  return text;
-}
-
 template <typename Number>
 std::optional<Number> parseNumber(std::string_view text) {
-  text = trimmed(text);
+  text = geometry::trimSpaces(text);
   Number value{};
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size() || text.empty()) {
@@ -29,7 +24,7 @@ std::optional<Number> parseNumber(std::string_view text) {
 }
 
 std::optional<bool> parseFlag(std::string_view text) {
-  text = trimmed(text);
+  text = geometry::trimSpaces(text);
   for (const std::string_view yes : {"true", "on", "yes", "1"}) {
     if (text == yes) return true;
   }
@@ -37,24 +32,6 @@ std::optional<bool> parseFlag(std::string_view text) {
     if (text == no) return false;
   }
   return std::nullopt;
-}
-
-// "x,y,z", also "(x,y,z)" and with spaces after the commas.
-std::optional<Cell> parseCell(std::string_view text) {
-  text = trimmed(text);
-  if (text.size() >= 2 && text.front() == '(' && text.back() == ')') {
-    text = text.substr(1, text.size() - 2);
-  }
-  int32_t parts[3];
-  for (int i = 0; i < 3; ++i) {
-    const size_t comma = i < 2 ? text.find(',') : text.size();
-    if (comma == std::string_view::npos) return std::nullopt;
-    const auto part = parseNumber<int32_t>(text.substr(0, comma));
-    if (!part) return std::nullopt;
-    parts[i] = *part;
-    text = i < 2 ? text.substr(comma + 1) : std::string_view();
-  }
-  return Cell{parts[0], parts[1], parts[2]};
 }
 
 std::string_view article(Parameter::Type type) {
@@ -148,7 +125,7 @@ Result<Parameters> Parameters::check(std::string_view program,
         break;
       }
       case Parameter::Type::kCell: {
-        const auto parsed = parseCell(text);
+        const auto parsed = geometry::cellFromText(text);
         if (!parsed) return bad("is not a cell x,y,z of three integers");
         value.cell = *parsed;
         break;

@@ -1,0 +1,40 @@
+// A cell as people type it: "x,y,z", also "(x,y,z)" as pictures and logs print cells, and with
+// spaces around the numbers. One reading for the command line and program parameters alike.
+#pragma once
+
+#include <charconv>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "geometry/cell.h"
+
+namespace datomsim::geometry {
+
+inline std::string_view trimSpaces(std::string_view text) {
+  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+  return text;
+}
+
+// The cell, or nullopt unless the text is exactly three integers of 32 bits.
+inline std::optional<Cell> cellFromText(std::string_view text) {
+  text = trimSpaces(text);
+  if (text.size() >= 2 && text.front() == '(' && text.back() == ')') {
+    text = text.substr(1, text.size() - 2);
+  }
+  int32_t parts[3];
+  for (int i = 0; i < 3; ++i) {
+    const size_t comma = i < 2 ? text.find(',') : text.size();
+    if (comma == std::string_view::npos) return std::nullopt;
+    const std::string_view part = trimSpaces(text.substr(0, comma));
+    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), parts[i]);
+    if (part.empty() || error != std::errc() || end != part.data() + part.size()) {
+      return std::nullopt;
+    }
+    text = i < 2 ? text.substr(comma + 1) : std::string_view();
+  }
+  return Cell{parts[0], parts[1], parts[2]};
+}
+
+}  // namespace datomsim::geometry

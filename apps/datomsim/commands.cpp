@@ -15,14 +15,21 @@ void check(const Status& status) {
 }
 
 void writeOutput(const std::string& path, const std::string& text) {
+  writeOutput(path, [&](std::FILE* file) -> Status {
+    if (std::fwrite(text.data(), 1, text.size(), file) != text.size()) return Error{""};
+    return Ok{};
+  });
+}
+
+void writeOutput(const std::string& path, const std::function<Status(std::FILE*)>& write) {
   if (path.empty() || path == "-") {
-    std::fwrite(text.data(), 1, text.size(), stdout);
+    if (const Status written = write(stdout); !written) {
+      throw UsageError("cannot write to standard output");
+    }
     return;
   }
   check(writeFileAtomically(path, [&](std::FILE* file) -> Status {
-    if (std::fwrite(text.data(), 1, text.size(), file) != text.size()) {
-      return Error{"cannot write " + path};
-    }
+    if (const Status written = write(file); !written) return Error{"cannot write " + path};
     return Ok{};
   }));
 }

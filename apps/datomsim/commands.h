@@ -2,6 +2,8 @@
 // outputs whole or not at all.
 #pragma once
 
+#include <cstdio>
+#include <functional>
 #include <map>
 #include <span>
 #include <stdexcept>
@@ -52,6 +54,8 @@ std::string runJson(const algorithms::ProgramInfo& program, const experiment::Ru
 
 // Writes text to a file atomically, or to standard output when the path is empty or "-".
 void writeOutput(const std::string& path, const std::string& text);
+// The same for text written as it is made, by `write` on an open file.
+void writeOutput(const std::string& path, const std::function<Status(std::FILE*)>& write);
 
 // A file a command reads or writes, with the option that names it ("scene", "--out"). An output
 // path that is empty or "-" is standard output.

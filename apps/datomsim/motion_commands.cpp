@@ -88,7 +88,7 @@ void addReach(CLI::App& app) {
     const std::string title = fmt::format("{}: distances to {} ({})", args->scene,
                                           geometry::toString(goal), ruleLabel(options));
     writePictures(scene.world, map, path, title, args->png, args->svg);
-    writeOutput(args->out, reachJson(map, path));
+    writeOutput(args->out, [&](std::FILE* file) { return writeReachJson(map, path, file); });
   });
 }
 

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
+
 #include <iterator>
 #include <nlohmann/json.hpp>
 
@@ -21,31 +23,43 @@ std::string_view onOff(bool on) {
 
 }  // namespace
 
-std::string reachJson(const motion::DistanceMap& map, const std::vector<Cell>& path) {
-  // Streamed by hand: a map can hold millions of cells, too many for a JSON tree.
-  std::string out;
-  auto sink = std::back_inserter(out);
+Status writeReachJson(const motion::DistanceMap& map, const std::vector<Cell>& path,
+                      std::FILE* file) {
+  // Streamed through a small buffer: a map can hold millions of cells, tens of megabytes of text
+  // that need not be held at once.
+  fmt::memory_buffer out;
+  auto flush = [&](size_t atLeast) {
+    if (out.size() < atLeast) return true;
+    const bool written = std::fwrite(out.data(), 1, out.size(), file) == out.size();
+    out.clear();
+    return written;
+  };
   const Cell& goal = map.goal();
-  fmt::format_to(sink,
+  fmt::format_to(std::back_inserter(out),
                  "{{\"goal\":[{},{},{}],\"rules\":\"{}\",\"attachment\":\"{}\","
                  "\"connectivity\":\"{}\",",
                  goal.x, goal.y, goal.z, motion::toString(map.options().rules),
                  onOff(map.options().attachment), onOff(map.options().connectivity));
   if (!path.empty()) {
-    out += "\"path\":[";
+    fmt::format_to(std::back_inserter(out), "\"path\":[");
     for (size_t i = 0; i < path.size(); ++i) {
-      fmt::format_to(sink, "{}[{},{},{}]", i ? "," : "", path[i].x, path[i].y, path[i].z);
+      fmt::format_to(std::back_inserter(out), "{}[{},{},{}]", i ? "," : "", path[i].x, path[i].y,
+                     path[i].z);
     }
-    out += "],";
+    fmt::format_to(std::back_inserter(out), "],");
   }
-  out += "\"distances\":[";
+  fmt::format_to(std::back_inserter(out), "\"distances\":[");
   bool first = true;
+  constexpr size_t kFlushBytes = size_t{1} << 16;
   for (const auto& [cell, distance] : map.sorted()) {
-    fmt::format_to(sink, "{}[{},{},{},{}]", first ? "" : ",", cell.x, cell.y, cell.z, distance);
+    fmt::format_to(std::back_inserter(out), "{}[{},{},{},{}]", first ? "" : ",", cell.x, cell.y,
+                   cell.z, distance);
     first = false;
+    if (!flush(kFlushBytes)) return Error{"cannot write the distances"};
   }
-  out += "]}\n";
-  return out;
+  fmt::format_to(std::back_inserter(out), "]}}\n");
+  if (!flush(0)) return Error{"cannot write the distances"};
+  return Ok{};
 }
 
 std::string movesJson(const Cell& at, const std::vector<motion::Evaluation>& moves) {

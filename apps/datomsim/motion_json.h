@@ -7,6 +7,7 @@
 // Pistons are world axes (docs/conventions.md, section 2). See docs/file-formats.md.
 #pragma once
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,9 @@
 
 namespace datomsim::app {
 
-std::string reachJson(const motion::DistanceMap& map, const std::vector<geometry::Cell>& path);
+// Streams the reach document to an open file; the error says what could not be written.
+Status writeReachJson(const motion::DistanceMap& map, const std::vector<geometry::Cell>& path,
+                      std::FILE* file);
 
 std::string movesJson(const geometry::Cell& at, const std::vector<motion::Evaluation>& moves);
 

@@ -115,49 +115,70 @@ Result<Scene> SceneHandler::finish() {
   if (!has(topSeen_, kTopKeys, "version")) return failure("", "missing \"version\"");
   if (!has(topSeen_, kTopKeys, "modules")) return failure("", "missing \"modules\"");
 
-  scene_.world = world::World(bounds_);
-  world::World& world = scene_.world;
-  for (size_t i = 0; i < pending_.size(); ++i) {
-    const world::Module& module = pending_[i].module;
-    // Check what World::add would refuse, to name the other module. Messages are only built on
-    // failure: this loop runs millions of times.
-    if (!world.isInside(module.cell) || world.moduleAt(module.cell) || world.find(module.id)) {
-      return placementError(i);
-    }
-    if (Status added = world.add(module); !added) {
-      return failure(fmt::format("modules[{}]", i), added.error());
-    }
+  if (!placeAsRead_) {
+    scene_.world = world::World(bounds_);
+    scene_.world.reserve(pending_.size());
+    for (const PendingModule& module : pending_) place(module);
+    pending_ = {};
   }
-  pending_ = {};
+  if (placementError_) return Error{*placementError_};
+  world::World& world = scene_.world;
   world.shrinkToFit();
   world.latchAllNeighbours();
   return std::move(scene_);
 }
 
-// Why module i cannot be placed in the world built so far.
-Error SceneHandler::placementError(size_t i) {
+void SceneHandler::startModules() {
+  // With the grid known (writers put it first), modules go into the world as they are read;
+  // otherwise the grid may still come, and they wait for it.
+  placeAsRead_ = has(topSeen_, kTopKeys, "grid");
+  if (placeAsRead_) scene_.world = world::World(bounds_);
+}
+
+void SceneHandler::place(const PendingModule& pending) {
+  const size_t index = placed_++;
+  // After the first error the world no longer matters: only that error is reported, once the
+  // rest of the document has shown no syntax error.
+  if (placementError_) return;
+  world::World& world = scene_.world;
+  const world::Module& module = pending.module;
+  // Check what World::add would refuse, to name the other module. Messages are only built on
+  // failure: this runs millions of times.
+  if (!world.isInside(module.cell) || world.moduleAt(module.cell) || world.find(module.id)) {
+    placementError_ = placementError(pending, index);
+  } else if (Status added = world.add(module); !added) {
+    placementError_ = failure(fmt::format("modules[{}]", index), added.error()).message;
+  }
+}
+
+// Why a module cannot be placed in the world built so far.
+std::string SceneHandler::placementError(const PendingModule& pending, size_t index) {
   const world::World& world = scene_.world;
-  const world::Module& module = pending_[i].module;
-  const std::string path = fmt::format("modules[{}]", i);
+  const world::Module& module = pending.module;
+  const std::string path = fmt::format("modules[{}]", index);
   const std::string cell = geometry::toString(module.cell);
   if (!world.isInside(module.cell)) {
     return failure(path + ".cell",
-                   fmt::format("cell {} {}", cell, world.bounds().whyOutside(module.cell)));
+                   fmt::format("cell {} {}", cell, world.bounds().whyOutside(module.cell)))
+        .message;
   }
   if (const world::Module* other = world.moduleAt(module.cell)) {
     return failure(path + ".cell",
                    fmt::format("cell {} is already occupied by modules[{}] (id {})", cell,
-                               other - world.modules().data(), other->id.value));
+                               other - world.modules().data(), other->id.value))
+        .message;
   }
   const world::Module* other = world.find(module.id);
   const size_t otherIndex = size_t(other - world.modules().data());
-  if (pending_[i].explicitId) {
-    return failure(path + ".id", fmt::format("id {} is already used by modules[{}]",
-                                             module.id.value, otherIndex));
+  if (pending.explicitId) {
+    return failure(path + ".id",
+                   fmt::format("id {} is already used by modules[{}]", module.id.value, otherIndex))
+        .message;
   }
   return failure(path, fmt::format("gets id {} from its place in the list, already used by "
                                    "modules[{}]; give it an \"id\"",
-                                   module.id.value, otherIndex));
+                                   module.id.value, otherIndex))
+      .message;
 }
 
 // A complete value for the current key.
@@ -300,14 +321,23 @@ bool SceneHandler::moduleField() {
 
 bool SceneHandler::finishModule() {
   if (!has(moduleSeen_, kModuleKeys, "cell")) return fail(modulePath(), "missing \"cell\"");
-  // Like the XML's blocks, a module without an id gets its place in the list.
-  if (!module_.explicitId) module_.module.id = ModuleId{uint32_t(pending_.size() + 1)};
-  pending_.push_back(module_);
+  addModule(module_);
   return true;
 }
 
+void SceneHandler::addModule(const PendingModule& module) {
+  PendingModule numbered = module;
+  // Like the XML's blocks, a module without an id gets its place in the list.
+  if (!module.explicitId) numbered.module.id = ModuleId{uint32_t(moduleCount() + 1)};
+  if (placeAsRead_) {
+    place(numbered);
+  } else {
+    pending_.push_back(numbered);
+  }
+}
+
 std::string SceneHandler::modulePath() const {
-  return fmt::format("modules[{}]", pending_.size());
+  return fmt::format("modules[{}]", moduleCount());
 }
 
 bool SceneHandler::fail(std::string_view path, std::string_view message) {

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <istream>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -71,6 +72,10 @@ class SceneHandler {
   const std::string& syntaxMessage() const { return syntaxMessage_; }
   const std::string& error() const { return error_; }
 
+  // A module the fast path (json_scene_fast.cpp) read and checked as moduleField would; the
+  // handler must be inside the modules array.
+  void addModule(const PendingModule& module);
+
   // Checks what only the whole document can tell, and builds the scene.
   Result<Scene> finish();
 
@@ -101,8 +106,13 @@ class SceneHandler {
                                               std::optional<Color> color);
   bool moduleField();
   bool finishModule();
-  // Why module i cannot be placed in the world built so far.
-  Error placementError(size_t i);
+  // Called when the modules array opens.
+  void startModules();
+  // Puts a module into the world, or keeps the first reason it cannot be.
+  void place(const PendingModule& module);
+  // Why the module at `index` in the list cannot be placed in the world built so far.
+  std::string placementError(const PendingModule& module, size_t index);
+  size_t moduleCount() const { return placeAsRead_ ? placed_ : pending_.size(); }
   std::string modulePath() const;
   // Records the error "source: path: message" and returns false, to stop the parse.
   bool fail(std::string_view path, std::string_view message);
@@ -122,11 +132,23 @@ class SceneHandler {
   Scene scene_;
   world::Bounds bounds_;
   PendingModule module_;
+  // Modules read before the grid is known, placed by finish().
   std::vector<PendingModule> pending_;
+  bool placeAsRead_ = false;
+  size_t placed_ = 0;
+  std::optional<std::string> placementError_;
 
   std::optional<size_t> syntaxPosition_;
   std::string syntaxMessage_;
   std::string error_;
 };
+
+// The fast path for documents of plain module objects: the scene (or the error finish() found),
+// or nullopt when it declines and the document must be read by the general reader.
+std::optional<Result<Scene>> readJsonSceneFast(std::string_view text, std::string_view source);
+std::optional<Result<Scene>> readJsonSceneFast(std::istream& input, std::string_view source);
+
+// The general reader alone, without the fast path (for tests that compare the two).
+Result<Scene> readJsonSceneGeneral(std::string_view text, std::string_view source);
 
 }  // namespace datomsim::io::detail

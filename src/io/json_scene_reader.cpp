@@ -58,6 +58,7 @@ bool SceneHandler::open(Json container) {
     case Place::kTop:
       if (key_ == "modules" && container.is_array()) {
         place_ = Place::kModules;
+        startModules();
         return true;
       }
       break;
@@ -142,7 +143,9 @@ Error syntaxError(const SceneHandler& handler, std::string_view source, LineColu
 
 }  // namespace
 
-Result<Scene> parseJsonScene(std::string_view text, std::string_view source) {
+namespace detail {
+
+Result<Scene> readJsonSceneGeneral(std::string_view text, std::string_view source) {
   SceneHandler handler(source);
   if (Json::sax_parse(text.begin(), text.end(), &handler)) return handler.finish();
   if (const auto position = handler.syntaxPosition()) {
@@ -153,12 +156,27 @@ Result<Scene> parseJsonScene(std::string_view text, std::string_view source) {
   return Error{handler.error()};
 }
 
+}  // namespace detail
+
+Result<Scene> parseJsonScene(std::string_view text, std::string_view source) {
+  if (auto scene = detail::readJsonSceneFast(text, source)) return std::move(*scene);
+  return detail::readJsonSceneGeneral(text, source);
+}
+
 Result<Scene> parseJsonScene(std::istream& input, std::string_view source) {
+  // The fast path declines by having read part of the stream: it needs one that can be read
+  // again from its start (a file; a pipe goes to the general reader directly).
+  const auto start = input.tellg();
+  if (start != std::istream::pos_type(-1)) {
+    if (auto scene = detail::readJsonSceneFast(input, source)) return std::move(*scene);
+    input.clear();
+    input.seekg(start);
+  }
   SceneHandler handler(source);
   if (Json::sax_parse(input, &handler)) return handler.finish();
   if (const auto position = handler.syntaxPosition()) {
     input.clear();
-    input.seekg(0);
+    input.seekg(start == std::istream::pos_type(-1) ? std::istream::pos_type(0) : start);
     LineColumn at;
     char c;
     for (size_t i = 0; i < *position && input.get(c); ++i) at.advance(c);

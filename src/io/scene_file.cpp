@@ -59,6 +59,10 @@ Result<Scene> readScene(const std::filesystem::path& path) {
 
   if (*format == SceneFormat::kJson) return parseJsonScene(input, name);
   std::string text;
+  // Reserved ahead: appending alone would grow the text by doubling, and hold up to three times
+  // its size at the last step.
+  if (std::filesystem::is_regular_file(status))
+    text.reserve(std::filesystem::file_size(path, error));
   std::vector<char> chunk(size_t{1} << 20);
   while (input.read(chunk.data(), std::streamsize(chunk.size())) || input.gcount() > 0) {
     text.append(chunk.data(), size_t(input.gcount()));

@@ -139,7 +139,10 @@ class XmlSceneReader {
  public:
   explicit XmlSceneReader(std::string_view source) : source_(source) {}
 
-  Result<Scene> read(std::string_view text) {
+  // Reads a document; with `scanned`, its <blockList> has been emptied and these are its blocks,
+  // and any problem with them gives an empty error (the caller then reads the whole text).
+  Result<Scene> read(std::string_view text, const std::vector<detail::ScannedBlock>* scanned) {
+    scanned_ = scanned;
     if (Status characters = checkXmlCharacters(text, source_); !characters) {
       return Error{characters.error()};
     }
@@ -327,6 +330,19 @@ class XmlSceneReader {
       if (Status added = world.add(module); !added) return errorAt(block, added.error());
       lines_.push_back(block->GetLineNum());
     }
+    if (scanned_) {
+      world.reserve(world.size() + scanned_->size());
+      for (const detail::ScannedBlock& block : *scanned_) {
+        world::Module module = block.module;
+        ++placeInFile;
+        if (!block.hasColor) module.color = defaultColor;
+        if (!block.hasId) module.id = ModuleId{placeInFile};
+        if (!world.isInside(module.cell) || world.moduleAt(module.cell) || world.find(module.id)) {
+          return Error{""};
+        }
+        if (!world.add(module).ok()) return Error{""};
+      }
+    }
     return Ok{};
   }
 
@@ -337,6 +353,7 @@ class XmlSceneReader {
 
   std::string_view source_;
   std::vector<int> lines_;
+  const std::vector<detail::ScannedBlock>* scanned_ = nullptr;
 };
 
 // An XML name as far as we write them: a letter or '_' then letters, digits, '_', '-', '.'.
@@ -464,8 +481,24 @@ void printScene(tinyxml2::XMLPrinter& printer, const Scene& scene) {
 }  // namespace
 
 Result<Scene> parseVisibleSimXml(std::string_view text, std::string_view source) {
-  return XmlSceneReader(source).read(text);
+  if (auto region = detail::scanBlockList(text)) {
+    // The document without its blocks, its lines kept where they were.
+    std::string skeleton(text.substr(0, region->begin));
+    skeleton.append(region->newlines, '\n');
+    skeleton.append(text.substr(region->end));
+    Result<Scene> scene = XmlSceneReader(source).read(skeleton, &region->blocks);
+    if (scene.ok()) return scene;
+  }
+  return detail::readVisibleSimXmlGeneral(text, source);
 }
+
+namespace detail {
+
+Result<Scene> readVisibleSimXmlGeneral(std::string_view text, std::string_view source) {
+  return XmlSceneReader(source).read(text, nullptr);
+}
+
+}  // namespace detail
 
 Result<std::string> toVisibleSimXml(const Scene& scene) {
   if (Status status = checkWritable(scene); !status) return Error{status.error()};

@@ -14,7 +14,9 @@
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
 #include "geometry/vec3.h"
+#include "io/scene.h"
 #include "target/target.h"
+#include "world/module.h"
 
 namespace datomsim::io::detail {
 
@@ -39,6 +41,28 @@ Error errorAt(std::string_view source, const tinyxml2::XMLElement* element,
 // "source:line: block position "1,2" must be three integers x,y,z"
 Error attributeError(std::string_view source, const tinyxml2::XMLElement* element,
                      const char* attribute, const char* value, std::string_view rule);
+
+// The fast path (visiblesim_xml_fast.cpp): the blocks of the <blockList> read straight from the
+// text, and where they lie in it, so that the rest can go through the general reader.
+struct ScannedBlock {
+  world::Module module;
+  // Whether the file gives them; otherwise the list's colour and the place in the file.
+  bool hasColor = false;
+  bool hasId = false;
+};
+struct BlockRegion {
+  // The blocks lie in [begin, end) of the text, with this many line breaks among them.
+  size_t begin = 0;
+  size_t end = 0;
+  size_t newlines = 0;
+  std::vector<ScannedBlock> blocks;
+};
+// The blocks, or nullopt when the text holds anything the fast path does not read (the general
+// reader then reads it all, and words any error).
+std::optional<BlockRegion> scanBlockList(std::string_view text);
+
+// The general reader alone, without the fast path (for tests that compare the two).
+Result<Scene> readVisibleSimXmlGeneral(std::string_view text, std::string_view source);
 
 // The targets of a <targetList>, in file order.
 Result<std::vector<target::Target>> readTargetList(const tinyxml2::XMLElement& targetList,

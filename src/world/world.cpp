@@ -55,12 +55,28 @@ void World::eraseIndex(ModuleId id) {
   }
 }
 
+void World::reserve(size_t modules) {
+  modules_.reserve(modules);
+  if (!sparseIds_) denseIndexById_.reserve(modules + 1);
+}
+
+namespace {
+
+// Shrinking copies the array, so for a moment both copies are held: worth it only when the slack
+// is large (a vector grown by doubling holds up to twice what it needs; one reserved ahead, none).
+template <typename T>
+void shrinkIfLoose(std::vector<T>& values) {
+  if (values.capacity() > values.size() + values.size() / 4) values.shrink_to_fit();
+}
+
+}  // namespace
+
 void World::shrinkToFit() {
   occupancy_.shrinkToFit();
-  modules_.shrink_to_fit();
+  shrinkIfLoose(modules_);
   if (!sparseIds_) {
     denseIndexById_.resize(maxId_ + 1);
-    denseIndexById_.shrink_to_fit();
+    shrinkIfLoose(denseIndexById_);
   }
 }
 

@@ -86,6 +86,10 @@ class World {
   // Whether the module's connector facing world direction d is latched.
   bool isLatched(const Module& module, int direction) const;
 
+  // Makes room for this many modules in all, so that loading a scene of known size grows no
+  // array by doubling.
+  void reserve(size_t modules);
+
   // Releases the room kept for growth, once a world is loaded or generated.
   void shrinkToFit();
 

@@ -51,6 +51,9 @@ void check(const Status& status);
 // The JSON result of `run` (see docs/file-formats.md).
 std::string runJson(const algorithms::ProgramInfo& program, const experiment::RunResult& result,
                     const std::map<std::string, std::string>& parameters = {});
+// The same, streamed to an open file (a large scene's lists are not held as one text).
+Status writeRunJson(const algorithms::ProgramInfo& program, const experiment::RunResult& result,
+                    const std::map<std::string, std::string>& parameters, std::FILE* file);
 
 // Writes text to a file atomically, or to standard output when the path is empty or "-".
 void writeOutput(const std::string& path, const std::string& text);

@@ -14,41 +14,99 @@
 
 namespace datomsim::app {
 
-std::string runJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
-                    const std::map<std::string, std::string>& parameters) {
+namespace {
+
+// Writes a JSON object field by field through `emit`: small values as nlohmann prints them, and
+// the long lists of cells (millions for a large scene) streamed without building a JSON tree.
+class JsonObjectStream {
+ public:
+  explicit JsonObjectStream(const std::function<void(std::string_view)>& emit) : emit_(emit) {}
+
+  void field(std::string_view key, const nlohmann::ordered_json& value) {
+    open(key);
+    buffer_.append(value.dump());
+    flush();
+  }
+  // [[x,y,z], ...]
+  void cells(std::string_view key, const std::vector<geometry::Cell>& list) {
+    open(key);
+    buffer_.push_back('[');
+    for (size_t i = 0; i < list.size(); ++i) {
+      fmt::format_to(std::back_inserter(buffer_), "{}[{},{},{}]", i ? "," : "", list[i].x,
+                     list[i].y, list[i].z);
+      flushIfFull();
+    }
+    buffer_.push_back(']');
+    flush();
+  }
+  // [[x,y,z,value], ...]; whole numbers print as integers.
+  template <typename Number>
+  void cellValues(std::string_view key,
+                  const std::vector<std::pair<geometry::Cell, Number>>& list) {
+    open(key);
+    buffer_.push_back('[');
+    for (size_t i = 0; i < list.size(); ++i) {
+      const auto& [cell, value] = list[i];
+      fmt::format_to(std::back_inserter(buffer_), "{}[{},{},{},", i ? "," : "", cell.x, cell.y,
+                     cell.z);
+      const double number = double(value);
+      if (number == double(int64_t(number)) && std::abs(number) < 9e15) {
+        fmt::format_to(std::back_inserter(buffer_), "{}]", int64_t(number));
+      } else {
+        buffer_.append(nlohmann::ordered_json(number).dump());
+        buffer_.push_back(']');
+      }
+      flushIfFull();
+    }
+    buffer_.push_back(']');
+    flush();
+  }
+  void close() {
+    buffer_.append(first_ ? std::string_view("{}\n") : std::string_view("}\n"));
+    flush();
+  }
+
+ private:
+  void open(std::string_view key) {
+    buffer_.push_back(first_ ? '{' : ',');
+    first_ = false;
+    buffer_.append(nlohmann::ordered_json(key).dump());
+    buffer_.push_back(':');
+  }
+  void flushIfFull() {
+    if (buffer_.size() >= size_t{1} << 16) flush();
+  }
+  void flush() {
+    emit_(std::string_view(buffer_.data(), buffer_.size()));
+    buffer_.clear();
+  }
+
+  const std::function<void(std::string_view)>& emit_;
+  fmt::memory_buffer buffer_;
+  bool first_ = true;
+};
+
+void streamRunJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
+                   const std::map<std::string, std::string>& parameters,
+                   const std::function<void(std::string_view)>& emit) {
   const sim::Statistics& statistics = result.statistics;
   auto seconds = [](Time t) { return double(t) / kSecond; };
-  nlohmann::ordered_json out;
-  out["program"] = info.name;
-  auto cells = [](const std::vector<geometry::Cell>& list) {
-    nlohmann::ordered_json array = nlohmann::ordered_json::array();
-    for (const geometry::Cell& cell : list) array.push_back({cell.x, cell.y, cell.z});
-    return array;
-  };
+  JsonObjectStream out(emit);
+  out.field("program", info.name);
   if (result.reshape) {
-    out["success"] = result.reshape->success;
-    if (!result.reshape->success) out["reason"] = result.reshape->reason;
-    out["final"] = cells(result.reshape->final);
-    out["missing"] = cells(result.reshape->missing);
-    out["extra"] = cells(result.reshape->extra);
+    out.field("success", result.reshape->success);
+    if (!result.reshape->success) out.field("reason", result.reshape->reason);
+    out.cells("final", result.reshape->final);
+    out.cells("missing", result.reshape->missing);
+    out.cells("extra", result.reshape->extra);
   } else if (info.entry) {
     // A public-API program: its parameters, then what its modules reported, key by key.
     nlohmann::ordered_json given = nlohmann::ordered_json::object();
     for (const auto& [name, value] : parameters) given[name] = value;
-    out["parameters"] = std::move(given);
-    out["stopped_at_limit"] = result.stoppedAtLimit;
+    out.field("parameters", given);
+    out.field("stopped_at_limit", result.stoppedAtLimit);
     for (const algorithms::ReportedValues& reported : result.reports) {
-      nlohmann::ordered_json values = nlohmann::ordered_json::array();
-      for (const auto& [cell, value] : reported.values) {
-        // Whole numbers print as integers ("hops": [[0,0,0,3], ...]).
-        const bool whole = value == double(int64_t(value)) && std::abs(value) < 9e15;
-        if (whole) {
-          values.push_back({cell.x, cell.y, cell.z, int64_t(value)});
-        } else {
-          values.push_back({cell.x, cell.y, cell.z, value});
-        }
-      }
-      out[reported.key] = std::move(values);
+      out.cellValues(reported.key, reported.values);
     }
   } else if (!info.needsGoal) {
     nlohmann::ordered_json walkers = nlohmann::ordered_json::array();
@@ -60,39 +118,54 @@ std::string runJson(const algorithms::ProgramInfo& info, const experiment::RunRe
                          {"failure", walker.failure ? nlohmann::ordered_json(*walker.failure)
                                                     : nlohmann::ordered_json()}});
     }
-    out["walkers"] = std::move(walkers);
+    out.field("walkers", walkers);
   } else if (!info.mobileWalks) {
     // Exactly as `reach` writes its distances.
-    nlohmann::ordered_json distances = nlohmann::ordered_json::array();
-    for (const auto& [cell, d] : result.distances) distances.push_back({cell.x, cell.y, cell.z, d});
-    out["distances"] = std::move(distances);
+    out.cellValues("distances", result.distances);
   } else {
-    nlohmann::ordered_json path = nlohmann::ordered_json::array();
-    for (const geometry::Cell& cell : result.path) path.push_back({cell.x, cell.y, cell.z});
-    out["path"] = std::move(path);
+    out.cells("path", result.path);
   }
-  out["motions"] = statistics.motions;
-  out["makespan_s"] = seconds(statistics.lastMotionEnd);
-  out["messages"] = statistics.messages();
-  out["max_concurrent_motions"] = statistics.maxConcurrentMotions;
-  out["mean_concurrent_motions"] = statistics.meanConcurrentMotions();
+  out.field("motions", statistics.motions);
+  out.field("makespan_s", seconds(statistics.lastMotionEnd));
+  out.field("messages", statistics.messages());
+  out.field("max_concurrent_motions", statistics.maxConcurrentMotions);
+  out.field("mean_concurrent_motions", statistics.meanConcurrentMotions());
   nlohmann::ordered_json refusals = nlohmann::ordered_json::object();
   for (const auto& [reason, count] : statistics.refusalsByReason) refusals[reason] = count;
-  out["refusals_by_reason"] = std::move(refusals);
-  out["reservation_wait_s"] = seconds(statistics.reservationWait);
+  out.field("refusals_by_reason", refusals);
+  out.field("reservation_wait_s", seconds(statistics.reservationWait));
   nlohmann::ordered_json messages = nlohmann::ordered_json::object();
   for (const auto& [type, count] : statistics.messagesByType) messages[type] = count;
-  out["messages_by_type"] = std::move(messages);
-  out["events"] = statistics.events();
+  out.field("messages_by_type", messages);
+  out.field("events", statistics.events());
   nlohmann::ordered_json byKind = nlohmann::ordered_json::object();
   for (int kind = 0; kind < sim::kEventKindCount; ++kind) {
     byKind[sim::toString(sim::EventKind(kind))] = statistics.eventsByKind[size_t(kind)];
   }
-  out["events_by_kind"] = std::move(byKind);
-  out["deformations"] = statistics.deformations;
-  out["sim_time_s"] = seconds(statistics.simulatedTime);
+  out.field("events_by_kind", byKind);
+  out.field("deformations", statistics.deformations);
+  out.field("sim_time_s", seconds(statistics.simulatedTime));
   // Wall time stays out of the JSON, which is the same for the same inputs; --stats prints it.
-  return out.dump() + "\n";
+  out.close();
+}
+
+}  // namespace
+
+std::string runJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
+                    const std::map<std::string, std::string>& parameters) {
+  std::string text;
+  streamRunJson(info, result, parameters, [&](std::string_view piece) { text += piece; });
+  return text;
+}
+
+Status writeRunJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
+                    const std::map<std::string, std::string>& parameters, std::FILE* file) {
+  bool written = true;
+  streamRunJson(info, result, parameters, [&](std::string_view piece) {
+    written = written && std::fwrite(piece.data(), 1, piece.size(), file) == piece.size();
+  });
+  if (!written) return Error{"cannot write the result"};
+  return Ok{};
 }
 
 namespace {
@@ -246,7 +319,9 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
         unwrap(experiment::runProgram(std::move(scene.world), table, request));
     // A failed reconfiguration is written like a successful one, to be looked at; then it fails.
     if (request.trace) writeOutput(args->trace, result.trace);
-    writeOutput(args->out, runJson(info, result, request.parameters));
+    writeOutput(args->out, [&](std::FILE* file) {
+      return writeRunJson(info, result, request.parameters, file);
+    });
     if (args->stats) printStatistics(result.statistics);
     if (result.reshape && !result.reshape->success) {
       throw UsageError("the target was not built: " + result.reshape->reason);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "datomsim/message.h"
@@ -56,21 +57,66 @@ class EventQueue {
     buckets_[event.time].push_back(std::move(event));
     ++size_;
   }
+  // Schedules a kStart event at `time` for each module, in this order: the same events as one
+  // schedule() each, kept as 4 bytes per module instead of an Event (starting a million modules
+  // at once would hold a hundred megabytes of events otherwise). `time` may not be before the
+  // time of an earlier batch.
+  void scheduleStarts(Time time, std::vector<uint32_t> moduleIndices) {
+    if (moduleIndices.empty()) return;
+    size_ += moduleIndices.size();
+    const uint64_t first = nextSequence_;
+    nextSequence_ += moduleIndices.size();
+    starts_.push_back({time, first, std::move(moduleIndices), 0});
+  }
   bool empty() const { return size_ == 0; }
   size_t size() const { return size_; }
-  const Event& top() const { return buckets_.begin()->second.front(); }
+  const Event& top() const {
+    if (startsFirst()) {
+      startHead_ = starts_.front().head();
+      return startHead_;
+    }
+    return buckets_.begin()->second.front();
+  }
   Event pop() {
+    --size_;
+    if (startsFirst()) {
+      StartBatch& batch = starts_.front();
+      const Event event = batch.head();
+      if (++batch.next == batch.modules.size()) starts_.pop_front();
+      now_ = event.time;
+      return event;
+    }
     auto first = buckets_.begin();
     Event event = std::move(first->second.front());
     first->second.pop_front();
     if (first->second.empty()) buckets_.erase(first);
-    --size_;
     now_ = event.time;
     return event;
   }
 
  private:
+  struct StartBatch {
+    Time time;
+    uint64_t firstSequence;
+    std::vector<uint32_t> modules;
+    size_t next;
+    Event head() const {
+      return Event{time, firstSequence + next, EventKind::kStart, modules[next], 0, {}};
+    }
+  };
+  // Whether the earliest event is the next start of a batch.
+  bool startsFirst() const {
+    if (starts_.empty()) return false;
+    if (buckets_.empty()) return true;
+    const StartBatch& batch = starts_.front();
+    const Event& event = buckets_.begin()->second.front();
+    return std::pair(batch.time, batch.firstSequence + batch.next) <
+           std::pair(event.time, event.sequence);
+  }
+
   std::map<Time, std::deque<Event>> buckets_;
+  std::deque<StartBatch> starts_;
+  mutable Event startHead_;
   size_t size_ = 0;
   uint64_t nextSequence_ = 0;
   Time now_ = 0;

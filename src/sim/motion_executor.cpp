@@ -66,7 +66,7 @@ uint32_t MotionExecutor::latchedBehind(uint32_t index, int ownConnector) const {
   if (const auto hinge = hingePartner(index, ownConnector)) return hinge->module;
   const Module& module = world_.modules()[index];
   const Module* other = world_.neighbour(module, module.orientation.worldDirection(ownConnector));
-  return other ? *world_.indexOf(other->id) : world::kNoModule;
+  return other ? uint32_t(other - world_.modules().data()) : world::kNoModule;
 }
 
 std::vector<world::BrokenLatch> MotionExecutor::latchesMovedBy(uint32_t index,

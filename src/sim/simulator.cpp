@@ -52,8 +52,11 @@ class Simulator::Context final : public program::ModuleContext {
   Orientation orientation() const override { return module().orientation; }
   Time now() const override { return simulator_.agenda_.now(); }
   std::optional<bool> occupied(const Cell& cell) const override {
-    const geometry::Vec3 gap = geometry::worldOffset(cell - module().cell, 1.0);
-    if (geometry::dot(gap, gap) > 4.0 + 1e-9) return std::nullopt;  // beyond two steps
+    // Beyond two steps (a distance of 2 lattice spacings) a module senses nothing. In whole
+    // numbers: four times the squared length of the offset (dx + dz/2, dy + dz/2, dz/sqrt 2).
+    const Cell d = cell - module().cell;
+    const int64_t x = 2 * int64_t{d.x} + d.z, y = 2 * int64_t{d.y} + d.z, z = d.z;
+    if (x * x + y * y + 2 * z * z > 16) return std::nullopt;
     return simulator_.world_.moduleAt(cell) != nullptr;
   }
   uint16_t latchedConnectors() const override { return module().latches; }
@@ -151,10 +154,14 @@ void Simulator::install(const program::ProgramFactory& factory) {
 }
 
 void Simulator::startAll() {
-  std::vector<ModuleId> ids;
-  for (const Module& module : world_.modules()) ids.push_back(module.id);
-  std::sort(ids.begin(), ids.end());
-  for (const ModuleId id : ids) start(id);
+  std::vector<std::pair<ModuleId, uint32_t>> byId;
+  byId.reserve(world_.size());
+  for (uint32_t i = 0; i < world_.size(); ++i) byId.push_back({world_.modules()[i].id, i});
+  std::sort(byId.begin(), byId.end());
+  std::vector<uint32_t> indices;
+  indices.reserve(byId.size());
+  for (const auto& [id, index] : byId) indices.push_back(index);
+  agenda_.scheduleStarts(agenda_.now(), std::move(indices));
 }
 
 void Simulator::start(ModuleId module) {

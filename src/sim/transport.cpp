@@ -40,7 +40,7 @@ Status Transport::send(uint32_t index, int ownConnector, const Message& message)
       return Error{
           fmt::format("module {}: nothing behind connector {}", module.id.value, ownConnector)};
     }
-    partner = *world_.indexOf(neighbour->id);
+    partner = uint32_t(neighbour - world_.modules().data());
     partnerConnector = neighbour->orientation.ownConnector(geometry::oppositeDirection(direction));
   }
   Time delay = times_.delay;

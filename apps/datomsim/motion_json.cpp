@@ -1,5 +1,7 @@
 #include "motion_json.h"
 
+#include "json_stream.h"
+
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -25,41 +27,16 @@ std::string_view onOff(bool on) {
 
 Status writeReachJson(const motion::DistanceMap& map, const std::vector<Cell>& path,
                       std::FILE* file) {
-  // Streamed through a small buffer: a map can hold millions of cells, tens of megabytes of text
-  // that need not be held at once.
-  fmt::memory_buffer out;
-  auto flush = [&](size_t atLeast) {
-    if (out.size() < atLeast) return true;
-    const bool written = std::fwrite(out.data(), 1, out.size(), file) == out.size();
-    out.clear();
-    return written;
-  };
-  const Cell& goal = map.goal();
-  fmt::format_to(std::back_inserter(out),
-                 "{{\"goal\":[{},{},{}],\"rules\":\"{}\",\"attachment\":\"{}\","
-                 "\"connectivity\":\"{}\",",
-                 goal.x, goal.y, goal.z, motion::toString(map.options().rules),
-                 onOff(map.options().attachment), onOff(map.options().connectivity));
-  if (!path.empty()) {
-    fmt::format_to(std::back_inserter(out), "\"path\":[");
-    for (size_t i = 0; i < path.size(); ++i) {
-      fmt::format_to(std::back_inserter(out), "{}[{},{},{}]", i ? "," : "", path[i].x, path[i].y,
-                     path[i].z);
-    }
-    fmt::format_to(std::back_inserter(out), "],");
-  }
-  fmt::format_to(std::back_inserter(out), "\"distances\":[");
-  bool first = true;
-  constexpr size_t kFlushBytes = size_t{1} << 16;
-  for (const auto& [cell, distance] : map.sorted()) {
-    fmt::format_to(std::back_inserter(out), "{}[{},{},{},{}]", first ? "" : ",", cell.x, cell.y,
-                   cell.z, distance);
-    first = false;
-    if (!flush(kFlushBytes)) return Error{"cannot write the distances"};
-  }
-  fmt::format_to(std::back_inserter(out), "]}}\n");
-  if (!flush(0)) return Error{"cannot write the distances"};
-  return Ok{};
+  FileEmitter emitter{file};
+  JsonObjectStream out(emitter.emit());
+  out.field("goal", cellJson(map.goal()));
+  out.field("rules", motion::toString(map.options().rules));
+  out.field("attachment", onOff(map.options().attachment));
+  out.field("connectivity", onOff(map.options().connectivity));
+  if (!path.empty()) out.cells("path", path);
+  out.cellValues("distances", map.sorted());
+  out.close();
+  return emitter.status("the distances");
 }
 
 std::string movesJson(const Cell& at, const std::vector<motion::Evaluation>& moves) {

@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "experiment/run.h"
 #include "io/scene_file.h"
+#include "json_stream.h"
 #include "sim/statistics.h"
 #include "target/target.h"
 
@@ -16,82 +17,12 @@ namespace datomsim::app {
 
 namespace {
 
-// Writes a JSON object field by field through `emit`: small values as nlohmann prints them, and
-// the long lists of cells (millions for a large scene) streamed without building a JSON tree.
-class JsonObjectStream {
- public:
-  explicit JsonObjectStream(const std::function<void(std::string_view)>& emit) : emit_(emit) {}
-
-  void field(std::string_view key, const nlohmann::ordered_json& value) {
-    open(key);
-    buffer_.append(value.dump());
-    flush();
-  }
-  // [[x,y,z], ...]
-  void cells(std::string_view key, const std::vector<geometry::Cell>& list) {
-    open(key);
-    buffer_.push_back('[');
-    for (size_t i = 0; i < list.size(); ++i) {
-      fmt::format_to(std::back_inserter(buffer_), "{}[{},{},{}]", i ? "," : "", list[i].x,
-                     list[i].y, list[i].z);
-      flushIfFull();
-    }
-    buffer_.push_back(']');
-    flush();
-  }
-  // [[x,y,z,value], ...]; whole numbers print as integers.
-  template <typename Number>
-  void cellValues(std::string_view key,
-                  const std::vector<std::pair<geometry::Cell, Number>>& list) {
-    open(key);
-    buffer_.push_back('[');
-    for (size_t i = 0; i < list.size(); ++i) {
-      const auto& [cell, value] = list[i];
-      fmt::format_to(std::back_inserter(buffer_), "{}[{},{},{},", i ? "," : "", cell.x, cell.y,
-                     cell.z);
-      const double number = double(value);
-      if (number == double(int64_t(number)) && std::abs(number) < 9e15) {
-        fmt::format_to(std::back_inserter(buffer_), "{}]", int64_t(number));
-      } else {
-        buffer_.append(nlohmann::ordered_json(number).dump());
-        buffer_.push_back(']');
-      }
-      flushIfFull();
-    }
-    buffer_.push_back(']');
-    flush();
-  }
-  void close() {
-    buffer_.append(first_ ? std::string_view("{}\n") : std::string_view("}\n"));
-    flush();
-  }
-
- private:
-  void open(std::string_view key) {
-    buffer_.push_back(first_ ? '{' : ',');
-    first_ = false;
-    buffer_.append(nlohmann::ordered_json(key).dump());
-    buffer_.push_back(':');
-  }
-  void flushIfFull() {
-    if (buffer_.size() >= size_t{1} << 16) flush();
-  }
-  void flush() {
-    emit_(std::string_view(buffer_.data(), buffer_.size()));
-    buffer_.clear();
-  }
-
-  const std::function<void(std::string_view)>& emit_;
-  fmt::memory_buffer buffer_;
-  bool first_ = true;
-};
-
 void streamRunJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
                    const std::map<std::string, std::string>& parameters,
-                   const std::function<void(std::string_view)>& emit) {
+                   JsonObjectStream::Emit emit) {
   const sim::Statistics& statistics = result.statistics;
   auto seconds = [](Time t) { return double(t) / kSecond; };
-  JsonObjectStream out(emit);
+  JsonObjectStream out(std::move(emit));
   out.field("program", info.name);
   if (result.reshape) {
     out.field("success", result.reshape->success);
@@ -160,12 +91,9 @@ std::string runJson(const algorithms::ProgramInfo& info, const experiment::RunRe
 
 Status writeRunJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
                     const std::map<std::string, std::string>& parameters, std::FILE* file) {
-  bool written = true;
-  streamRunJson(info, result, parameters, [&](std::string_view piece) {
-    written = written && std::fwrite(piece.data(), 1, piece.size(), file) == piece.size();
-  });
-  if (!written) return Error{"cannot write the result"};
-  return Ok{};
+  FileEmitter emitter{file};
+  streamRunJson(info, result, parameters, emitter.emit());
+  return emitter.status("the result");
 }
 
 namespace {

@@ -144,18 +144,24 @@ class EntryPrograms final : public ProgramSet {
       const std::function<geometry::Cell(ModuleId)>& cellOf) const override {
     struct Collector final : Report {
       void set(std::string_view key, double value) override {
-        byKey[std::string(key)].push_back({cell, value});
+        auto [values, added] = byKey.try_emplace(std::string(key));
+        // Most keys are reported by every module: room for all at once, not by doubling.
+        if (added) values->second.reserve(moduleCount);
+        values->second.push_back({cell, value});
       }
+      size_t moduleCount = 0;
       geometry::Cell cell;
       std::map<std::string, std::vector<std::pair<geometry::Cell, double>>> byKey;
     } collector;
+    collector.moduleCount = made_.size();
     for (const auto& [id, program] : made_) {
       collector.cell = cellOf(id);
       program->program().report(collector);
     }
     std::vector<ReportedValues> out;
     for (auto& [key, values] : collector.byKey) {
-      std::sort(values.begin(), values.end());
+      // Modules in id order are often in cell order already (generated scenes): then no sort.
+      if (!std::is_sorted(values.begin(), values.end())) std::sort(values.begin(), values.end());
       out.push_back({key, std::move(values)});
     }
     return out;

@@ -87,16 +87,39 @@ void addOutputOption(CLI::App& command, std::string& out) {
                      "Write the JSON to this file (without it, or with \"-\": standard output)");
 }
 
-void writePictures(const world::World& world, const motion::DistanceMap& map,
+void writePictures(const world::World& world, bool mobileTakenOut, const motion::DistanceMap& map,
                    const std::vector<geometry::Cell>& path, const std::string& title,
-                   const std::string& png, const std::string& svg) {
+                   const PictureRequest& request) {
+  if (request.png.empty() && request.svg.empty()) return;
   render::DistanceMapPicture picture;
   picture.world = &world;
   picture.distances = map.sorted();
   picture.path = path;
   picture.title = title;
-  if (!png.empty()) check(render::writeDistanceMapPng(picture, png));
-  if (!svg.empty()) check(render::writeDistanceMapSvg(picture, svg));
+  picture.mobileTakenOut = mobileTakenOut;
+  if (request.scale > 0) picture.pixelsPerCell = request.scale;
+  if (request.maxSize >= 0) {
+    picture.maxSide = request.maxSize;
+  } else if (request.scale > 0) {
+    picture.maxSide = 0;
+  }
+  // What the pictures leave out, as their note line says it.
+  const render::DistanceMapLayout layout = unwrap(render::layoutDistanceMap(picture));
+  if (!layout.note.empty()) {
+    std::string files = request.png;
+    if (!request.svg.empty()) files += (files.empty() ? "" : ", ") + request.svg;
+    std::string hint;
+    if (layout.scaledDown) {
+      render::DistanceMapPicture full = picture;
+      full.maxSide = 0;
+      const render::DistanceMapLayout fullSize = unwrap(render::layoutDistanceMap(full));
+      hint = fmt::format("; --scale {} draws them at full size, {} x {} px", picture.pixelsPerCell,
+                         fullSize.width, fullSize.height);
+    }
+    fmt::print(stderr, "{}: {}{}\n", files, layout.note, hint);
+  }
+  if (!request.png.empty()) check(render::writeDistanceMapPng(picture, request.png));
+  if (!request.svg.empty()) check(render::writeDistanceMapSvg(picture, request.svg));
 }
 
 }  // namespace datomsim::app

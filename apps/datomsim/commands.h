@@ -74,9 +74,22 @@ void refuseClashes(const std::vector<NamedPath>& inputs, const std::vector<Named
 // The --out option whose value writeOutput takes.
 void addOutputOption(CLI::App& command, std::string& out);
 
-// The distance map pictures, for each path that is not empty.
-void writePictures(const world::World& world, const motion::DistanceMap& map,
+// The distance map pictures asked for: their files (none when empty) and their size.
+struct PictureRequest {
+  std::string png;
+  std::string svg;
+  // Pixels per cell; 0 for the default, 48.
+  int scale = 0;
+  // The longest side in pixels, 0 for no limit, -1 for the default: 4000 pixels without a
+  // scale (the default scale is lowered to fit), no limit with one.
+  int maxSize = -1;
+};
+
+// The distance map pictures, for each file asked for. `world` holds the fixed modules; the
+// mobile, when it was taken out of the scene, is counted in the title. Says on standard error
+// when the pictures are drawn smaller than asked or without some of their numbers.
+void writePictures(const world::World& world, bool mobileTakenOut, const motion::DistanceMap& map,
                    const std::vector<geometry::Cell>& path, const std::string& title,
-                   const std::string& png, const std::string& svg);
+                   const PictureRequest& request);
 
 }  // namespace datomsim::app

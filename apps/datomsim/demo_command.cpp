@@ -61,9 +61,10 @@ void addDemoCommand(CLI::App& app) {
           fmt::format("Paper scene, arch hole {} high: distances to G {} and the path from {}",
                       result.holeHeight, geometry::toString(scene::kPaperGoal),
                       geometry::toString(scene::kPaperStart));
-      writePictures(result.fixedWorld, result.distances, result.path, title,
-                    (folder / (name + "-distances.png")).string(),
-                    (folder / (name + "-distances.svg")).string());
+      // The mobile is not among the fixed modules.
+      writePictures(result.fixedWorld, true, result.distances, result.path, title,
+                    {.png = (folder / (name + "-distances.png")).string(),
+                     .svg = (folder / (name + "-distances.svg")).string()});
       writeOutput((folder / (name + "-trace.jsonl")).string(), result.run.trace);
       writeOutput((folder / (name + "-run.json")).string(),
                   runJson(*algorithms::programInfo(algorithms::kFollowGradient), result.run));

@@ -10,6 +10,7 @@
 
 #include "arguments.h"
 #include "commands.h"
+#include "experiment/run.h"
 #include "geometry/lattice.h"
 #include "io/scene_file.h"
 #include "motion/bidirectionality.h"
@@ -26,7 +27,8 @@ std::string ruleLabel(const motion::RuleOptions& options) {
 
 void addReach(CLI::App& app) {
   struct Arguments {
-    std::string scene, goal, start, out, png, svg;
+    std::string scene, goal, start, out;
+    PictureRequest pictures;
     RuleArguments rules;
   };
   auto args = std::make_shared<Arguments>();
@@ -36,7 +38,8 @@ void addReach(CLI::App& app) {
   command->add_option("--goal", args->goal, "Goal cell x,y,z; a module there is the mobile")
       ->required();
   command->add_option("--start", args->start,
-                      "Also follow the gradient from this cell and draw the path");
+                      "Also follow the gradient from this cell and draw the path; the mobile is "
+                      "the module there, else the one at the goal (as for run)");
   args->rules.addTo(*command);
   addOutputOption(*command, args->out);
   command->add_option("--png", args->png, "Write the distance map as a PNG picture");
@@ -60,8 +63,13 @@ void addReach(CLI::App& app) {
     }
     const geometry::Cell goal = parseCell("--goal", args->goal);
     const motion::RuleOptions options = args->rules.options();
+    const std::optional<geometry::Cell> start =
+        args->start.empty() ? std::nullopt : std::optional(parseCell("--start", args->start));
     io::Scene scene = unwrap(io::readScene(args->scene));
-    motion::takeMobile(scene.world, goal);
+    // The mobile, chosen as `run` chooses it, is not part of the fixed world.
+    const experiment::MobileChoice mobile =
+        unwrap(experiment::chooseMobile(scene.world, goal, start));
+    if (mobile.module) check(scene.world.remove(*mobile.module));
     // A goal next to no module is reached by nothing: say so rather than draw an empty map.
     bool touches = false;
     for (int d = 0; d < geometry::kDirectionCount && !touches; ++d) {
@@ -77,17 +85,16 @@ void addReach(CLI::App& app) {
     const motion::DistanceMap map = unwrap(motion::reach(scene.world, table, goal, options));
 
     std::vector<geometry::Cell> path;
-    if (!args->start.empty()) {
-      const geometry::Cell start = parseCell("--start", args->start);
-      path.push_back(start);
+    if (start) {
+      path.push_back(*start);
       for (const motion::Motion& m :
-           unwrap(motion::followGradient(scene.world, table, map, start))) {
+           unwrap(motion::followGradient(scene.world, table, map, *start))) {
         path.push_back(m.goal);
       }
     }
     const std::string title = fmt::format("{}: distances to {} ({})", args->scene,
                                           geometry::toString(goal), ruleLabel(options));
-    writePictures(scene.world, map, path, title, args->png, args->svg);
+    writePictures(scene.world, mobileTakenOut, map, path, title, pictures);
     writeOutput(args->out, [&](std::FILE* file) { return writeReachJson(map, path, file); });
   });
 }

@@ -55,7 +55,9 @@ void streamRunJson(const algorithms::ProgramInfo& info, const experiment::RunRes
     out.cellValues("distances", result.distances);
   } else {
     out.cells("path", result.path);
+    out.field("arrived", result.arrived.value_or(false));
   }
+  if (result.failure && !result.reshape) out.field("reason", *result.failure);
   out.field("motions", statistics.motions);
   out.field("makespan_s", seconds(statistics.lastMotionEnd));
   out.field("messages", statistics.messages());
@@ -245,7 +247,7 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
     const motion::RuleTable table;
     const experiment::RunResult result =
         unwrap(experiment::runProgram(std::move(scene.world), table, request));
-    // A failed reconfiguration is written like a successful one, to be looked at; then it fails.
+    // A failed run is written like a successful one, to be looked at and counted; then it fails.
     if (request.trace) writeOutput(args->trace, result.trace);
     writeOutput(args->out, [&](std::FILE* file) {
       return writeRunJson(info, result, request.parameters, file);
@@ -254,6 +256,7 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
     if (result.reshape && !result.reshape->success) {
       throw UsageError("the target was not built: " + result.reshape->reason);
     }
+    if (result.failure) throw UsageError(*result.failure);
   });
 }
 

@@ -43,6 +43,7 @@ Result<PaperScene> runScene(const motion::RuleTable& table, int hole) {
       fmt::format("{} on the paper's scene, arch hole {} high", algorithms::kFollowGradient, hole);
   auto run = runProgram(std::move(*world), table, request);
   if (!run.ok()) return Error{run.error()};
+  if (run->failure) return Error{*run->failure};
   result.run = std::move(*run);
 
   // The obstacle: every module above the box (z >= 2).

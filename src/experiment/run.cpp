@@ -23,13 +23,13 @@ constexpr Color kMobileGreen{64, 255, 64};
 Result<ModuleId> placeMobile(world::World& world, const RunRequest& request) {
   const Cell goal = *request.goal;
   const Cell home = request.start.value_or(goal);
-  if (const world::Module* atStart = world.moduleAt(home)) return atStart->id;
-  if (const world::Module* atGoal = world.moduleAt(goal)) {
-    const ModuleId id = atGoal->id;
-    const Status moved = world.move(id, home);
+  const auto choice = chooseMobile(world, goal, request.start);
+  if (!choice.ok()) return Error{choice.error()};
+  if (choice->module && choice->fromGoal && home != goal) {
+    const Status moved = world.move(*choice->module, home);
     if (!moved.ok()) return Error{"cannot move the mobile to the start: " + moved.error()};
-    return id;
   }
+  if (choice->module) return *choice->module;
   world::Module mobile;
   mobile.id = world.nextFreeId();
   mobile.cell = home;
@@ -69,6 +69,29 @@ Status checkCellParameters(const world::World& world, const ProgramEntry& entry,
 }
 
 }  // namespace
+
+Result<MobileChoice> chooseMobile(const world::World& world, const Cell& goal,
+                                  const std::optional<Cell>& start) {
+  const world::Module* atGoal = world.moduleAt(goal);
+  if (!start || *start == goal) {
+    if (!atGoal) return MobileChoice{};
+    return MobileChoice{atGoal->id, false};
+  }
+  if (!world.isInside(*start)) {
+    return Error{"start " + toString(*start) + " " + world.bounds().whyOutside(*start)};
+  }
+  const world::Module* atStart = world.moduleAt(*start);
+  if (atStart && atGoal) {
+    return Error{fmt::format(
+        "the start {} holds module {} and the goal {} module {}: the module at the start is the "
+        "mobile, so the goal must be empty (or leave the start empty, and the module at the goal "
+        "is moved there)",
+        toString(*start), atStart->id.value, toString(goal), atGoal->id.value)};
+  }
+  if (atStart) return MobileChoice{atStart->id, false};
+  if (atGoal) return MobileChoice{atGoal->id, true};
+  return MobileChoice{};
+}
 
 bool isRunOutputKey(std::string_view key) {
   static constexpr std::array<std::string_view, 23> kKeys = {"program",
@@ -192,23 +215,25 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     simulator.trigger(*mobile, algorithms::FollowGradientProgram::kFollowTrigger);
     status = simulator.run();
   }
-  if (!status.ok()) return Error{status.error()};
+  // From here on a failure is a result: what the run did is kept, so that it can be looked at.
+  if (!status.ok()) result.failure = status.error();
 
   result.mobile = mobile.value_or(ModuleId{});
   result.statistics = simulator.statistics();
   const world::World& ended = simulator.world();
   result.distances = (*programs)->distances([&](ModuleId id) { return ended.find(id)->cell; });
 
-  if (const auto failed = (*programs)->failure()) {
-    return Error{fmt::format("module {} failed: {}", failed->first.value, failed->second)};
+  if (const auto failed = (*programs)->failure(); failed && !result.failure) {
+    result.failure = fmt::format("module {} failed: {}", failed->first.value, failed->second);
   }
   if (const auto walk = (*programs)->mobile()) {
-    if (walk->failure) return Error{"the mobile stopped: " + *walk->failure};
-    if (!walk->arrived) {
-      return Error{fmt::format("the mobile did not reach the goal {}: {}", toString(*request.goal),
-                               walk->wait)};
-    }
+    result.arrived = walk->arrived && !walk->failure;
     result.path = walk->path;
+    if (walk->failure && !result.failure) result.failure = "the mobile stopped: " + *walk->failure;
+    if (!walk->arrived && !result.failure) {
+      result.failure = fmt::format("the mobile did not reach the goal {}: {}",
+                                   toString(*request.goal), walk->wait);
+    }
   }
   result.walkers = (*programs)->walkers();
   result.reports = (*programs)->reports([&](ModuleId id) { return ended.find(id)->cell; });

@@ -25,6 +25,21 @@
 
 namespace datomsim::experiment {
 
+// Which module is the mobile for a goal and a start: one rule for `reach` and `run`
+// (docs/simulation.md, "The mobile"). The module at the start, if there is one; else the module
+// at the goal, moved to the start; else none (`run` then adds a new module at the start). The
+// mobile is never part of the fixed world the gradient is computed on.
+struct MobileChoice {
+  std::optional<ModuleId> module;
+  // The module at the goal, which goes to the start.
+  bool fromGoal = false;
+};
+
+// Refuses a start outside the world, and a start and a goal that both hold a module (the mobile
+// would be the one at the start, and could never enter the goal).
+Result<MobileChoice> chooseMobile(const world::World& world, const geometry::Cell& goal,
+                                  const std::optional<geometry::Cell>& start);
+
 struct RunRequest {
   std::string program{algorithms::kGradient};
   // The gradient's goal; programs that have none (walkers) run without.
@@ -62,6 +77,12 @@ struct RunResult {
   std::vector<algorithms::ReportedValues> reports;
   // Whether events remained when the run stopped at `until`.
   bool stoppedAtLimit = false;
+  // follow-gradient: whether the mobile reached the goal.
+  std::optional<bool> arrived;
+  // Why the run did not do what it was asked, when it did not: an invariant violated, a module
+  // that gave up, a mobile that did not arrive. The rest is filled in as far as the run went,
+  // trace included, so that the failure can be looked at and counted.
+  std::optional<std::string> failure;
   sim::Statistics statistics;
   std::string trace;  // JSON Lines, when asked for
 };
@@ -70,10 +91,11 @@ struct RunResult {
 // may not take.
 bool isRunOutputKey(std::string_view key);
 
-// Refuses a goal or start outside the world, an unknown program, bad parameters (and cell
-// parameters outside the world, or empty where the program needs a module), follow-gradient without
-// a start, reconfigure without a target of as many cells as modules, a run stopped by an invariant
-// (the violation's report) and a mobile that fails to arrive.
+// Refuses, before running, a goal or start outside the world, an unknown program, bad parameters
+// (and cell parameters outside the world, or empty where the program needs a module),
+// follow-gradient without a start, reconfigure without a target of as many cells as modules; and,
+// after it, a program that reports under a key of the run's own output. A run that fails (an
+// invariant violated, a mobile that does not arrive) is a result with its `failure`.
 Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
                              const RunRequest& request);
 

@@ -45,12 +45,12 @@ Error cairoError(std::string_view what, cairo_status_t status) {
 
 // Draws on the surface and reports cairo's first error, if any.
 Status drawOn(cairo_surface_t* surface, const Scene& scene, const DistanceMapPicture& picture,
-              const DistanceMapLayout& layout) {
+              const DistanceMapLayout& layout, detail::CellPainter& painter) {
   if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
     return cairoError("cannot create the picture", cairo_surface_status(surface));
   }
   const ContextPtr cr(cairo_create(surface));
-  detail::draw(cr.get(), scene, picture, layout);
+  detail::draw(cr.get(), scene, picture, layout, painter);
   if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
     return cairoError("cannot draw the picture", cairo_status(cr.get()));
   }
@@ -81,6 +81,40 @@ void renumberSurfaceIds(std::string& svg) {
   svg = std::move(out);
 }
 
+// Text for an SVG element's content.
+std::string escapeXml(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+// The picture's text lines as the SVG's title and description, for readers that do not see the
+// drawing (its text is glyph outlines, not characters): right after the opening <svg> tag.
+void addTitle(std::string& svg, const DistanceMapPicture& picture, const Scene& scene,
+              const DistanceMapLayout& layout) {
+  const size_t open = svg.find("<svg");
+  const size_t end = open == std::string::npos ? open : svg.find('>', open);
+  if (end == std::string::npos) return;
+  std::string description = scene.summary;
+  if (!layout.note.empty()) description += ". " + layout.note;
+  svg.insert(end + 1, fmt::format("\n<title>{}</title>\n<desc>{}</desc>", escapeXml(picture.title),
+                                  escapeXml(description)));
+}
+
 Status writeWith(Result<std::string> (*render)(const DistanceMapPicture&),
                  const DistanceMapPicture& picture, const std::filesystem::path& path) {
   Result<std::string> bytes = render(picture);
@@ -97,13 +131,14 @@ Result<std::string> renderDistanceMapPng(const DistanceMapPicture& picture) {
   if (layout.width > kMaxPngSide || layout.height > kMaxPngSide) {
     return Error{fmt::format(
         "the picture would be {} x {} pixels, more than the {} a PNG can have on a side; lower "
-        "pixelsPerCell ({})",
-        layout.width, layout.height, kMaxPngSide, picture.pixelsPerCell)};
+        "pixelsPerCell ({}) or set maxSide",
+        layout.width, layout.height, kMaxPngSide, layout.pixelsPerCell)};
   }
   // RGB without alpha: the background is opaque white, and the files are smaller.
   const SurfacePtr surface(
       cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height));
-  if (Status drawn = drawOn(surface.get(), *scene, picture, layout); !drawn)
+  detail::CairoCellPainter painter;
+  if (Status drawn = drawOn(surface.get(), *scene, picture, layout, painter); !drawn)
     return Error{drawn.error()};
   std::string bytes;
   const cairo_status_t status =
@@ -117,12 +152,13 @@ Result<std::string> renderDistanceMapSvg(const DistanceMapPicture& picture) {
   if (!scene) return Error{scene.error()};
   const DistanceMapLayout layout = detail::layoutOf(*scene, picture);
   std::string bytes;
+  detail::SvgCellPainter painter;
   {
     const SurfacePtr surface(
         cairo_svg_surface_create_for_stream(appendToString, &bytes, layout.width, layout.height));
     // Pixels, not points, so that the SVG and the PNG have the same size on screen.
     cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
-    if (Status drawn = drawOn(surface.get(), *scene, picture, layout); !drawn) {
+    if (Status drawn = drawOn(surface.get(), *scene, picture, layout, painter); !drawn) {
       return Error{drawn.error()};
     }
     // Finishing writes the document's end; only then are the bytes complete.
@@ -131,7 +167,9 @@ Result<std::string> renderDistanceMapSvg(const DistanceMapPicture& picture) {
       return cairoError("cannot encode the SVG", cairo_surface_status(surface.get()));
     }
   }
+  if (Status placed = painter.replacePlaceholders(bytes); !placed) return Error{placed.error()};
   renumberSurfaceIds(bytes);
+  addTitle(bytes, picture, *scene, layout);
   return bytes;
 }
 

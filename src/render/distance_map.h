@@ -4,12 +4,17 @@
 // modules are discs of diameter one lattice spacing in their own colour, lighter on higher layers
 // and drawn lowest layer first. Over them, each reachable cell gets a square at its centre in the
 // colour of its distance to the goal (colors.h). An optional path is a red line through the cell
-// centres, from a start marker to a goal marker. A title, a legend and axis ticks with cell
-// numbers make the picture readable on its own. See docs/pictures.md.
+// centres, from a start marker to a goal marker, with a tag naming the layer wherever it changes
+// layer. A title, a legend and axis ticks with cell numbers make the picture readable on its own.
+// See docs/pictures.md.
 //
 // Positions come from geometry::worldPosition projected on x and y, so odd layers of the skew
 // lattice sit half a cell off the even ones, and layer z + 2 sits one cell up and right of layer
-// z: the ticks name the cells of one layer (DistanceMapLayout::tickLayer).
+// z: the ticks name the cells of one layer (DistanceMapLayout::tickLayer), and the caption under
+// the map says where the cells of the other layers sit.
+//
+// A picture is at most maxSide pixels on a side: a larger one is drawn at a smaller scale, and
+// numbers too small to read are left out; a line under the title says so.
 //
 // Same input, same bytes: the writers use no clock and no random ids.
 #pragma once
@@ -25,6 +30,10 @@
 
 namespace datomsim::render {
 
+// The longest side of a picture unless asked otherwise, in pixels: large enough for a scene of
+// about 80 cells a side at the default scale, small enough for any image viewer.
+inline constexpr int kDefaultMaxPictureSide = 4000;
+
 // What to draw. The world is only read, and must outlive the call; it may be null (no modules).
 struct DistanceMapPicture {
   const world::World* world = nullptr;
@@ -35,10 +44,16 @@ struct DistanceMapPicture {
   std::vector<geometry::Cell> path;
   // First line of the picture, e.g. scene name, goal and rule options.
   std::string title;
-  // Size of one lattice spacing on the picture, in pixels (8..256).
+  // Size of one lattice spacing on the picture, in pixels (2..256).
   int pixelsPerCell = 48;
+  // The longest side of the picture, in pixels, or 0 for no limit. A picture that would be larger
+  // at pixelsPerCell is drawn at the largest scale that fits, down to 2 pixels per cell.
+  int maxSide = kDefaultMaxPictureSide;
   // Print the distance on every square, not only on those past the paper's colours (10 and up).
   bool labelAllDistances = false;
+  // The scene's mobile module is not in `world` (it was taken out to compute the distances): the
+  // title's count says "+ the mobile".
+  bool mobileTakenOut = false;
 };
 
 // A point of the picture in pixels: x to the right, y down, from the top-left corner.
@@ -52,7 +67,14 @@ struct PixelPoint {
 struct DistanceMapLayout {
   int width = 0;   // pixels
   int height = 0;  // pixels
+  // The scale drawn, at most the picture's pixelsPerCell: less when it was lowered to fit maxSide.
   double pixelsPerCell = 0;
+  bool scaledDown = false;
+  // Squares carry their number only up to this many digits: smaller numbers would not be
+  // readable at this scale (0: no numbers on the map).
+  int labelDigits = 0;
+  // The line under the title saying what the scale left out, or empty.
+  std::string note;
   double fontSize = 0;  // pixels, of the ticks and legend; the title is larger
   // The map area: the frame around the cells, in pixels.
   double mapLeft = 0;
@@ -76,7 +98,7 @@ struct DistanceMapLayout {
 };
 
 // The layout of a picture; refuses a negative distance, a cell listed twice and a pixelsPerCell
-// out of range, naming the cell or value.
+// or maxSide out of range, naming the cell or value.
 Result<DistanceMapLayout> layoutDistanceMap(const DistanceMapPicture& picture);
 
 // The picture as the bytes of a PNG file (8-bit RGB) or an SVG file (pixel units).

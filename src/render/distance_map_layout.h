@@ -23,12 +23,36 @@ inline constexpr double kCharWidth = 0.62;  // average advance of a sans-serif d
 inline constexpr double kLegendRowHeight = 1.65;
 inline constexpr double kLegendSwatch = 1.25;
 inline constexpr double kTitleScale = 1.3;
+inline constexpr double kNoteLineHeight = 1.4;
+// Size of a path's layer tag ("z=3") and of its text.
+inline constexpr double kTagScale = 0.85;
+
+// Sizes in lattice spacings.
+inline constexpr double kSquareSide = 0.42;
+// A square under a higher one at the same place seen from the top (layers z and z + 2) grows by
+// this much per square above it, so that it shows as a frame around them instead of vanishing.
+inline constexpr double kStackGrowth = 0.18;
+
+// The smallest number printed on a square, in pixels: smaller ones are left out.
+inline constexpr double kMinLabelFont = 7;
 
 // One row of the legend, read top to bottom and then column by column.
 struct LegendRow {
-  enum class Kind { kHeader, kDistance, kPathLine, kPathStart, kPathGoal, kLayer, kGap };
+  enum class Kind {
+    kHeader,
+    kDistance,       // value: the distance
+    kDistanceRange,  // value..last: distances of one colour
+    kStackFrame,     // value: the distance of the frame (lower cell), last: of the square on it
+    kPathLine,
+    kPathStart,
+    kPathGoal,
+    kPathLayer,  // value: a layer the path changes to
+    kLayer,      // value: the layer
+    kGap
+  };
   Kind kind = Kind::kGap;
-  int value = 0;  // the distance, or the layer
+  int value = 0;
+  int last = 0;
   std::string label;
 };
 
@@ -36,11 +60,26 @@ struct LegendRow {
 struct Scene {
   // Reachable cells by (z, y, x): lower layers first, so higher squares are drawn on top.
   std::vector<std::pair<geometry::Cell, int>> distances;
+  // For each of `distances`, how many reachable cells lie above it at the same place seen from
+  // the top (layers z + 2, z + 4...): its square is drawn larger by as many steps, as a frame.
+  std::vector<int> stackedAbove;
+  // For each of `distances` with a cell above it, the distance of the nearest one; else -1.
+  std::vector<int> nextAboveDistance;
   // Fixed modules by (z, y, x), for the same reason.
   std::vector<const world::Module*> modules;
   int lowestModuleLayer = 0;
   int highestModuleLayer = 0;
+  // The lowest and highest layer of everything drawn: modules, squares and the path.
+  int lowestLayer = 0;
+  int highestLayer = 0;
+  // Some of them sit half a cell off the tick layer's cells: on a layer of the other parity.
+  bool otherParityDrawn = false;
   std::vector<int> presentDistances;  // sorted, distinct
+  // The path's cells that get a tag naming their layer: where the layer changes, and the start
+  // when it is not on the tick layer. Indices into the picture's path.
+  std::vector<size_t> layerTags;
+  // The axis ticks name the cells of this layer (DistanceMapLayout::tickLayer).
+  int tickLayer = 0;
   std::vector<LegendRow> legend;
   std::string summary;  // the second line of the title
 };
@@ -54,7 +93,19 @@ DistanceMapLayout layoutOf(const Scene& scene, const DistanceMapPicture& picture
 // The width of a line of text, estimated without font metrics.
 double estimatedTextWidth(std::string_view text, double fontSize);
 
-// The line under the map, naming the layer whose cells the ticks show.
-std::string axisCaption(int tickLayer);
+// The lines under the map: the layer whose cells the ticks show and, when other layers are
+// drawn, where their cells sit.
+std::vector<std::string> axisCaption(const Scene& scene);
+
+// The caption's line height, in font heights.
+inline constexpr double kCaptionLineHeight = 1.3;
+
+// The text of a path's layer tag: "z=3", or "z=3\u21921" for a path going straight down from
+// layer 3 to 1; and the width of a tag of one layer in the legend, estimated.
+std::string layerTag(const std::vector<int>& layers);
+double legendTagWidth(int layer, double fontSize);
+
+// The number of digits of a distance.
+int digitCount(int distance);
 
 }  // namespace datomsim::render::detail

@@ -42,6 +42,7 @@ TEST(PaperExperiment, DistributedGradientEqualsReachOnBothArchScenes) {
       request.simulation.rules.attachment = attachment;
       const auto run = experiment::runProgram(paperScene(hole), table(), request);
       ASSERT_TRUE(run.ok()) << run.error();
+      ASSERT_FALSE(run->failure) << *run->failure;
       EXPECT_EQ(run->distances,
                 reachDistances(paperScene(hole), *request.goal, request.simulation.rules))
           << "hole " << hole;
@@ -67,6 +68,7 @@ TEST(PaperExperiment, DistributedGradientEqualsReachOnRandomScenes) {
       request.simulation.seed = seed;
       const auto run = experiment::runProgram(*world, table(), request);
       ASSERT_TRUE(run.ok()) << run.error();
+      ASSERT_FALSE(run->failure) << *run->failure;
       // The new mobile stands at the goal in the distributed run; reach imagines it there.
       EXPECT_EQ(run->distances, reachDistances(*world, goal, request.simulation.rules))
           << "seed " << seed;
@@ -88,6 +90,9 @@ FollowRun followOnPaperScene(int hole, uint64_t seed = 1) {
   request.trace = true;
   auto run = experiment::runProgram(paperScene(hole), table(), request);
   EXPECT_TRUE(run.ok()) << run.error();
+  if (run.ok()) {
+    EXPECT_FALSE(run->failure) << *run->failure;
+  }
   return {std::move(*run), reachDistances(paperScene(hole), scene::kPaperGoal, {})};
 }
 
@@ -161,12 +166,18 @@ TEST(PaperExperiment, FollowGradientArrivesOrSaysWhyOnRandomScenes) {
     request.start = start;
     request.simulation.seed = seed;
     const auto run = experiment::runProgram(*world, table(), request);
-    if (!run.ok()) {
-      EXPECT_NE(run.error().find("did not reach the goal " + toString(goal) + ": at "),
+    ASSERT_TRUE(run.ok()) << run.error();
+    if (run->failure) {
+      EXPECT_NE(run->failure->find("did not reach the goal " + toString(goal) + ": at "),
                 std::string::npos)
-          << "seed " << seed << ": " << run.error();
+          << "seed " << seed << ": " << *run->failure;
+      EXPECT_EQ(run->arrived, false);
+      // What the mobile did is kept: it set out from the start.
+      ASSERT_FALSE(run->path.empty());
+      EXPECT_EQ(run->path.front(), start);
       continue;
     }
+    EXPECT_EQ(run->arrived, true);
     ++arrived;
     EXPECT_EQ(int(run->path.size()) - 1, farthest) << "seed " << seed;
     EXPECT_EQ(run->path.back(), goal);
@@ -196,9 +207,11 @@ TEST(FollowGradientFailures, AMobileLatchedToNothingSaysSo) {
   request.goal = scene::kPaperGoal;
   request.start = Cell{0, 0, 6};  // above the scene, touching no module
   const auto run = experiment::runProgram(paperScene(2), table(), request);
-  ASSERT_FALSE(run.ok());
-  EXPECT_NE(run.error().find("at 0,0,6 it is latched to no module"), std::string::npos)
-      << run.error();
+  ASSERT_TRUE(run.ok()) << run.error();
+  ASSERT_TRUE(run->failure.has_value());
+  EXPECT_NE(run->failure->find("at 0,0,6 it is latched to no module"), std::string::npos)
+      << *run->failure;
+  EXPECT_EQ(run->arrived, false);
 }
 
 TEST(FollowGradientFailures, AGoalOnAnotherIslandIsNotReachable) {
@@ -211,9 +224,10 @@ TEST(FollowGradientFailures, AGoalOnAnotherIslandIsNotReachable) {
   request.goal = Cell{8, 8, 1};
   request.start = Cell{0, 0, 1};
   const auto run = experiment::runProgram(std::move(world), table(), request);
-  ASSERT_FALSE(run.ok());
-  EXPECT_NE(run.error().find("the goal is not reachable from there"), std::string::npos)
-      << run.error();
+  ASSERT_TRUE(run.ok()) << run.error();
+  ASSERT_TRUE(run->failure.has_value());
+  EXPECT_NE(run->failure->find("the goal is not reachable from there"), std::string::npos)
+      << *run->failure;
 }
 
 }  // namespace

@@ -45,6 +45,7 @@ TEST(Reconfigure, ALineBecomesABlock) {
   scene::ReshapeCase reshape = *scene::lineToBlock(8);
   const auto run = experiment::runProgram(reshape.world, table(), reconfigure(reshape.target));
   ASSERT_TRUE(run.ok()) << run.error();
+  ASSERT_FALSE(run->failure) << *run->failure;
   expectBuilt(*run, reshape.target);
   EXPECT_GE(run->statistics.maxConcurrentMotions, 2);
 }
@@ -56,6 +57,7 @@ TEST(Reconfigure, ThePapersArchIsBuiltFromALayerOnItsBoxManyModulesAtOnce) {
     request.trace = true;
     const auto run = experiment::runProgram(reshape.world, table(), request);
     ASSERT_TRUE(run.ok()) << run.error();
+    ASSERT_FALSE(run->failure) << *run->failure;
     expectBuilt(*run, reshape.target);
     EXPECT_GE(run->statistics.maxConcurrentMotions, 4) << "hole " << hole;
     // The same seed, the same run.

@@ -51,6 +51,9 @@ experiment::RunResult walk(sim::SimulationOptions options, bool trace = false) {
   request.trace = trace;
   auto result = experiment::runProgram(walkersScene(), kTable, request);
   EXPECT_TRUE(result.ok()) << result.error();
+  if (result.ok()) {
+    EXPECT_FALSE(result->failure) << *result->failure;
+  }
   return result.ok() ? *result : experiment::RunResult{};
 }
 

@@ -44,6 +44,9 @@ std::map<Cell, int> flood(world::World world, const Cell& root, Time jitter) {
   request.simulation.messageJitter = jitter;
   const auto run = experiment::runProgram(std::move(world), table(), request);
   EXPECT_TRUE(run.ok()) << run.error();
+  if (run.ok()) {
+    EXPECT_FALSE(run->failure) << *run->failure;
+  }
   std::map<Cell, int> hops;
   if (!run.ok()) return hops;
   EXPECT_EQ(run->reports.size(), 1u);

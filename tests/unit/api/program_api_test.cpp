@@ -126,6 +126,7 @@ TEST(ProgramApi, AQueuedMotionRefusedWhenItsTurnComesReachesOnMotionEnded) {
   request.trace = true;
   const auto run = experiment::runProgram(std::move(world), table(), request);
   ASSERT_TRUE(run.ok()) << run.error();
+  ASSERT_FALSE(run->failure) << *run->failure;
 
   EXPECT_EQ(seen.asked.at(firstId), MoveResult::State::kStarted);
   EXPECT_EQ(seen.asked.at(secondId), MoveResult::State::kQueued);

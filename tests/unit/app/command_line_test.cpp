@@ -174,6 +174,57 @@ TEST_F(CommandLine, RunGradientWritesTheSameDistancesAsReach) {
             nlohmann::json::parse(readText(path("reach.json")))["distances"]);
 }
 
+// One rule for the mobile in `reach` and `run` (docs/simulation.md, "The mobile"): the module at
+// the start moves, and is not part of the fixed world.
+TEST_F(CommandLine, ReachAndRunChooseTheSameMobileAndFindTheSamePath) {
+  const std::string scene = arch(2);  // module 113 sits at 4,1,3; 6,6,3 is empty
+  const Outcome reach =
+      datomsim("reach " + scene + " --goal 6,6,3 --start 4,1,3 --out " + path("reach.json"));
+  ASSERT_EQ(reach.status, 0) << reach.output;
+  const Outcome run =
+      datomsim("run " + scene + " --program follow-gradient --goal 6,6,3 --start 4,1,3 --out " +
+               path("run.json"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto reachPath = nlohmann::json::parse(readText(path("reach.json")))["path"];
+  EXPECT_EQ(reachPath.size(), 6u);
+  EXPECT_EQ(nlohmann::json::parse(readText(path("run.json")))["path"], reachPath);
+
+  // A start that holds a module while the goal holds another, and a start outside the world,
+  // are named, the same way by both.
+  for (const std::string& command :
+       {"reach " + scene + " --goal 6,5,2", "run " + scene +
+                                                " --program follow-gradient --goal "
+                                                "6,5,2"}) {
+    const Outcome both = datomsim(command + " --start 4,1,3");
+    EXPECT_EQ(both.status, 1);
+    EXPECT_NE(both.output.find("the start 4,1,3 holds module 113 and the goal 6,5,2 module 1"),
+              std::string::npos)
+        << both.output;
+    const Outcome outside = datomsim(command + " --start 40,1,3");
+    EXPECT_EQ(outside.status, 1);
+    EXPECT_NE(outside.output.find("start 40,1,3 is outside the grid 11,11,11"), std::string::npos)
+        << outside.output;
+  }
+}
+
+// A run that fails is written all the same, to be looked at and counted, and exits 1.
+TEST_F(CommandLine, AFailedRunWritesItsTraceAndJsonWithTheReason) {
+  const Outcome run =
+      datomsim("run " + arch(2) + " --program follow-gradient --goal 6,5,2 --start 0,0,6 --out " +
+               path("run.json") + " --trace " + path("run.jsonl"));
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.output.find("at 0,0,6 it is latched to no module"), std::string::npos)
+      << run.output;
+  const auto json = nlohmann::json::parse(readText(path("run.json")));
+  EXPECT_EQ(json["arrived"], false);
+  EXPECT_NE(json["reason"].get<std::string>().find("latched to no module"), std::string::npos);
+  EXPECT_EQ(json["path"].front(), nlohmann::json::array({0, 0, 6}));
+  EXPECT_GT(json["messages"].get<int>(), 0);
+  // The trace is whole: its header, the gradient's messages, its footer.
+  const std::string trace = readText(path("run.jsonl"));
+  EXPECT_NE(trace.find("\"end\":{\"events\":"), std::string::npos) << trace.substr(0, 200);
+}
+
 TEST_F(CommandLine, RunFollowGradientReportsItsStatistics) {
   const Outcome run =
       datomsim("run " + arch(2) + " --program follow-gradient --goal 6,5,2 --start 0,0,2 --out " +
@@ -181,6 +232,8 @@ TEST_F(CommandLine, RunFollowGradientReportsItsStatistics) {
   ASSERT_EQ(run.status, 0) << run.output;
   const auto json = nlohmann::json::parse(readText(path("run.json")));
   EXPECT_EQ(json["path"].size(), 8u);  // the start's distance is 7
+  EXPECT_EQ(json["arrived"], true);
+  EXPECT_EQ(json.find("reason"), json.end());
   EXPECT_EQ(json["motions"], 7);
   uint64_t sum = 0;
   for (const auto& [kind, count] : json["events_by_kind"].items()) sum += count.get<uint64_t>();

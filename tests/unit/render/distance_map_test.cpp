@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "render/colors.h"
+#include "render/distance_map_layout.h"
 
 namespace datomsim::render {
 namespace {
@@ -247,7 +248,26 @@ std::string svgFill(Color c) {
   return fmt::format("fill:rgb({},{},{});", percent(c.r), percent(c.g), percent(c.b));
 }
 
-// Paths of the document filled with `color`.
+// The map's squares of one colour: <rect> elements in a group whose style fills them with it.
+int countMapSquares(const tinyxml2::XMLElement* element, Color color) {
+  const std::string fill = fmt::format("fill:#{:02x}{:02x}{:02x};", color.r, color.g, color.b);
+  int count = 0;
+  for (const auto* child = element->FirstChildElement(); child != nullptr;
+       child = child->NextSiblingElement()) {
+    const char* style = child->Attribute("style");
+    if (std::string_view(child->Name()) == "g" && style != nullptr &&
+        std::string_view(style).find(fill) != std::string_view::npos) {
+      for (const auto* rect = child->FirstChildElement("rect"); rect != nullptr;
+           rect = rect->NextSiblingElement("rect")) {
+        ++count;
+      }
+    }
+    count += countMapSquares(child, color);
+  }
+  return count;
+}
+
+// Paths of the document filled with `color` (the legend's, drawn by cairo).
 int countFilledPaths(const tinyxml2::XMLElement* element, const std::string& fill) {
   int count = 0;
   for (const auto* child = element->FirstChildElement(); child != nullptr;
@@ -279,10 +299,16 @@ TEST_F(DistanceMap, WritesAWellFormedSvgWithOneSquarePerReachableCellAndLegendEn
   // Each distance of the paper's colours: its squares on the map, and one in the legend; the
   // legend's goal marker has a square of distance 0 too.
   for (int d = 0; d < kPaperDistanceCount; ++d) {
-    int squares = d == 0 ? 2 : 1;
+    int squares = 0;
     for (const auto& entry : picture.distances) squares += entry.second == d ? 1 : 0;
-    EXPECT_EQ(countFilledPaths(svg, svgFill(distanceColor(d))), squares) << "distance " << d;
+    EXPECT_EQ(countMapSquares(svg, distanceColor(d)), squares) << "distance " << d;
+    EXPECT_EQ(countFilledPaths(svg, svgFill(distanceColor(d))), d == 0 ? 2 : 1) << "distance " << d;
   }
+  // The title's lines as text, for readers that do not see the drawing.
+  ASSERT_NE(svg->FirstChildElement("title"), nullptr);
+  EXPECT_EQ(std::string(svg->FirstChildElement("title")->GetText()), picture.title);
+  EXPECT_EQ(std::string(svg->FirstChildElement("desc")->GetText()).substr(0, 40),
+            "98 modules, 64 reachable cells, distance");
 }
 
 TEST_F(DistanceMap, ListsOnlyThePresentDistancesInTheLegend) {
@@ -292,10 +318,12 @@ TEST_F(DistanceMap, ListsOnlyThePresentDistancesInTheLegend) {
   ASSERT_TRUE(svg.ok()) << svg.error();
   tinyxml2::XMLDocument document;
   ASSERT_EQ(document.Parse(svg->data(), svg->size()), tinyxml2::XML_SUCCESS);
-  EXPECT_EQ(countFilledPaths(document.RootElement(), svgFill(distanceColor(0))), 2);
-  EXPECT_EQ(countFilledPaths(document.RootElement(), svgFill(distanceColor(3))), 3);
+  EXPECT_EQ(countFilledPaths(document.RootElement(), svgFill(distanceColor(0))), 1);
+  EXPECT_EQ(countFilledPaths(document.RootElement(), svgFill(distanceColor(3))), 1);
+  EXPECT_EQ(countMapSquares(document.RootElement(), distanceColor(3)), 2);
   for (int d : {1, 2, 4, 5, 6, 7, 8, 9}) {
     EXPECT_EQ(countFilledPaths(document.RootElement(), svgFill(distanceColor(d))), 0) << d;
+    EXPECT_EQ(countMapSquares(document.RootElement(), distanceColor(d)), 0) << d;
   }
 }
 
@@ -334,14 +362,18 @@ TEST_F(DistanceMap, RefusesABadPictureNamingTheCellOrValueAndWritesNothing) {
   DistanceMapPicture twice;
   twice.distances = {{{1, 2, 3}, 4}, {{0, 0, 0}, 0}, {{1, 2, 3}, 5}};
   DistanceMapPicture tiny;
-  tiny.pixelsPerCell = 2;
+  tiny.pixelsPerCell = 1;
+  DistanceMapPicture unlimited;
+  unlimited.maxSide = -1;
   DistanceMapPicture huge;
   huge.pixelsPerCell = 256;
+  huge.maxSide = 0;
   huge.distances = {{{0, 0, 0}, 0}, {{200, 0, 0}, 1}};
   const std::pair<const DistanceMapPicture*, std::string> cases[] = {
       {&negative, "cell 1,2,3 has a negative distance -1"},
       {&twice, "cell 1,2,3 appears twice"},
-      {&tiny, "pixelsPerCell is 2"},
+      {&tiny, "pixelsPerCell is 1"},
+      {&unlimited, "maxSide is -1"},
       {&huge, "lower pixelsPerCell (256)"},
   };
   for (const auto& [picture, message] : cases) {
@@ -386,6 +418,214 @@ TEST(DistanceMapLayout, PutsXToTheRightYUpAndOddLayersHalfACellOff) {
     EXPECT_GT(p.y - 20, layout->mapTop);
     EXPECT_LT(p.y + 20, layout->mapTop + layout->mapHeight);
   }
+}
+
+// A flat square of side x side modules on layer 0, and on every cell of layer 1 above it its
+// Manhattan distance to the middle: distances up to `side`, past the paper's colours.
+struct BigScene {
+  world::World world;
+  DistanceMapPicture picture;
+  explicit BigScene(int side) {
+    uint32_t id = 1;
+    for (int y = 0; y < side; ++y) {
+      for (int x = 0; x < side; ++x) EXPECT_TRUE(world.add(moduleAt(id++, {x, y, 0}, kOlive)).ok());
+    }
+    picture.world = &world;
+    picture.title = "big";
+    for (int y = 0; y < side - 1; ++y) {
+      for (int x = 0; x < side - 1; ++x) {
+        picture.distances.push_back({{x, y, 1}, std::abs(x - side / 2) + std::abs(y - side / 2)});
+      }
+    }
+  }
+};
+
+TEST_F(DistanceMap, DrawsABigSceneAtTheLargestScaleThatFitsItsLongestSideAndSaysSo) {
+  const BigScene scene(150);
+  DistanceMapLayout layout;
+  const Image image = writeAndRead(scene.picture, layout);
+  // At the default scale the picture would be about 7,300 pixels wide.
+  EXPECT_EQ(scene.picture.maxSide, 4000);
+  EXPECT_TRUE(layout.scaledDown);
+  EXPECT_EQ(cairo_image_surface_get_width(image.get()), layout.width);
+  EXPECT_EQ(cairo_image_surface_get_height(image.get()), layout.height);
+  EXPECT_LE(std::max(layout.width, layout.height), 4000);
+  // One pixel per cell more would not fit.
+  DistanceMapPicture larger = scene.picture;
+  larger.pixelsPerCell = static_cast<int>(layout.pixelsPerCell) + 1;
+  larger.maxSide = 0;
+  const DistanceMapLayout tooLarge = *layoutDistanceMap(larger);
+  EXPECT_GT(std::max(tooLarge.width, tooLarge.height), 4000);
+  EXPECT_NE(layout.note.find(fmt::format("scaled down to {} px per cell (from 48) to fit 4000 px",
+                                         layout.pixelsPerCell)),
+            std::string::npos)
+      << layout.note;
+  // The cells are where the layout says, in their colours.
+  const PixelPoint middle = layout.pixelOf({75, 75, 1});
+  EXPECT_EQ(pixelAt(image.get(), middle.x, middle.y), distanceColor(0));
+}
+
+TEST(DistanceMapLayout, DrawsAtTheScaleAskedWhenTheLimitAllowsIt) {
+  BigScene scene(150);
+  scene.picture.pixelsPerCell = 20;
+  scene.picture.maxSide = 0;
+  const DistanceMapLayout layout = *layoutDistanceMap(scene.picture);
+  EXPECT_FALSE(layout.scaledDown);
+  EXPECT_EQ(layout.pixelsPerCell, 20);
+  EXPECT_TRUE(layout.note.find("scaled") == std::string::npos) << layout.note;
+  // The modules span 150 cells, and the map has 0.35 cell of room on each side.
+  EXPECT_EQ(layout.mapWidth, std::ceil(150.7 * 20));
+  EXPECT_DOUBLE_EQ(layout.pixelOf({1, 0, 0}).x - layout.pixelOf({0, 0, 0}).x, 20);
+  EXPECT_GT(layout.width, 3014);
+}
+
+// How many pixels of a square's inside are (nearly) white: its number's, on the dark ramp.
+int whitePixelsInside(cairo_surface_t* image, PixelPoint centre, double side) {
+  int white = 0;
+  for (double y = centre.y - side / 2 + 2; y < centre.y + side / 2 - 2; y += 1) {
+    for (double x = centre.x - side / 2 + 2; x < centre.x + side / 2 - 2; x += 1) {
+      const Color c = pixelAt(image, x, y);
+      white += c.r > 200 && c.g > 200 && c.b > 200 ? 1 : 0;
+    }
+  }
+  return white;
+}
+
+TEST_F(DistanceMap, LeavesOutTheNumbersTooSmallToReadAndSaysSo) {
+  DistanceMapPicture picture;
+  picture.pixelsPerCell = 30;  // a square is 12.6 pixels: room for two digits, not three
+  picture.distances = {{{0, 0, 0}, 0}, {{2, 0, 0}, 12}, {{4, 0, 0}, 123}};
+  DistanceMapLayout layout;
+  const Image image = writeAndRead(picture, layout);
+  EXPECT_EQ(layout.labelDigits, 2);
+  const double side = 0.42 * layout.pixelsPerCell;
+  EXPECT_GT(whitePixelsInside(image.get(), layout.pixelOf({2, 0, 0}), side), 3);
+  EXPECT_EQ(whitePixelsInside(image.get(), layout.pixelOf({4, 0, 0}), side), 0);
+  EXPECT_NE(layout.note.find("no numbers on the squares from 100 on"), std::string::npos)
+      << layout.note;
+
+  // At the default scale every number is printed, and nothing is said.
+  picture.pixelsPerCell = 48;
+  const Image full = writeAndRead(picture, layout);
+  EXPECT_GT(whitePixelsInside(full.get(), layout.pixelOf({4, 0, 0}), 0.42 * 48), 3);
+  EXPECT_EQ(layout.note, "");
+}
+
+TEST_F(DistanceMap, ListsTheFrameAroundAStackedCellInTheLegend) {
+  DistanceMapPicture picture;
+  // (2,2,2) sits right above (3,3,0): the lower one's square shows as a frame around it.
+  picture.distances = {{{2, 2, 2}, 2}, {{3, 3, 0}, 4}, {{5, 3, 0}, 0}};
+  const Result<detail::Scene> scene = detail::prepare(picture);
+  ASSERT_TRUE(scene.ok()) << scene.error();
+  const auto row = std::find_if(scene->legend.begin(), scene->legend.end(), [](const auto& r) {
+    return r.kind == detail::LegendRow::Kind::kStackFrame;
+  });
+  ASSERT_NE(row, scene->legend.end());
+  EXPECT_EQ(row->label, "frame: a cell 2 layers below");
+
+  // Drawn as on the map: the upper cell's colour inside, the lower one's around it (large
+  // enough to tell the frame from the borders).
+  picture.pixelsPerCell = 64;
+  DistanceMapLayout layout;
+  const Image image = writeAndRead(picture, layout);
+  const int index = static_cast<int>(row - scene->legend.begin());
+  const double font = layout.fontSize;
+  const double swatch = font * detail::kLegendSwatch;
+  const PixelPoint mark{layout.legendLeft +
+                            (index / layout.legendRowsPerColumn) * layout.legendColumnWidth +
+                            swatch / 2,
+                        layout.legendTop + (index % layout.legendRowsPerColumn + 0.5) * font *
+                                               detail::kLegendRowHeight};
+  EXPECT_EQ(pixelAt(image.get(), mark.x, mark.y), distanceColor(2));
+  EXPECT_EQ(pixelAt(image.get(), mark.x + swatch * 0.42, mark.y), distanceColor(4));
+
+  // Without a stacked cell, no such row.
+  picture.distances = {{{2, 2, 2}, 2}, {{5, 3, 0}, 0}};
+  const detail::Scene flat = *detail::prepare(picture);
+  for (const auto& r : flat.legend) {
+    EXPECT_NE(r.kind, detail::LegendRow::Kind::kStackFrame) << r.label;
+  }
+}
+
+TEST(DistanceMapLayout, CountsTheMobileTakenOutOfTheSceneInTheTitle) {
+  const world::World world = box();
+  DistanceMapPicture picture = boxPicture(world);
+  EXPECT_EQ(detail::prepare(picture)->summary.substr(0, 11), "98 modules,");
+  picture.mobileTakenOut = true;
+  EXPECT_EQ(detail::prepare(picture)->summary.substr(0, 25), "98 modules + the mobile, ");
+  const std::string svg = *renderDistanceMapSvg(picture);
+  EXPECT_NE(svg.find("<desc>98 modules + the mobile, 64 reachable cells"), std::string::npos);
+}
+
+TEST(DistanceMapLayout, TagsThePathWhereItChangesLayerAndSaysWhereOtherLayersSit) {
+  DistanceMapPicture picture;
+  picture.distances = {{{4, 3, 2}, 0}, {{0, 0, 2}, 5}};
+  // Up over something and down again: tags on (1,1,3), (1,0,4), (3,2,3) and the goal (4,3,2).
+  picture.path = {{0, 0, 2}, {1, 1, 2}, {1, 1, 3}, {1, 0, 4}, {2, 1, 4}, {3, 2, 3}, {4, 3, 2}};
+  const detail::Scene scene = *detail::prepare(picture);
+  EXPECT_EQ(scene.tickLayer, 2);
+  EXPECT_EQ(scene.layerTags, (std::vector<size_t>{2, 3, 5, 6}));
+  EXPECT_EQ(detail::layerTag({picture.path[3].z}), "z=4");
+  EXPECT_EQ(detail::layerTag({3, 1}), "z=3\u21921");
+  const auto row = std::find_if(scene.legend.begin(), scene.legend.end(), [](const auto& r) {
+    return r.kind == detail::LegendRow::Kind::kPathLayer;
+  });
+  ASSERT_NE(row, scene.legend.end());
+  EXPECT_EQ(row->value, 3);
+  EXPECT_EQ(detail::axisCaption(scene),
+            (std::vector<std::string>{"x, y: cells of layer z = 2",
+                                      "cell (x, y, z) is drawn at x + (z \u2212 2)/2, y + (z "
+                                      "\u2212 2)/2"}));
+
+  // A path that stays on the tick layer gets no tag, and one layer needs no second line.
+  picture.path = {{0, 0, 2}, {1, 1, 2}, {2, 2, 2}};
+  const detail::Scene flat = *detail::prepare(picture);
+  EXPECT_TRUE(flat.layerTags.empty());
+  EXPECT_EQ(detail::axisCaption(flat), (std::vector<std::string>{"x, y: cells of layer z = 2"}));
+  // A start off the tick layer is tagged.
+  picture.path = {{0, 0, 3}, {1, 1, 2}};
+  EXPECT_EQ(detail::prepare(picture)->layerTags, (std::vector<size_t>{0, 1}));
+}
+
+TEST(DistanceMapLayout, DrawsTheTagsOnThePicture) {
+  DistanceMapPicture picture;
+  picture.distances = {{{4, 3, 2}, 0}, {{0, 0, 2}, 5}};
+  picture.path = {{0, 0, 2}, {1, 1, 2}, {1, 1, 3}, {1, 0, 4}, {2, 1, 4}, {3, 2, 3}, {4, 3, 2}};
+  // The tags are cairo's text: glyphs in the SVG, one per character of "z=3", "z=4", "z=3",
+  // "z=2" and of the legend's "z=3".
+  const std::string withTags = *renderDistanceMapSvg(picture);
+  picture.path = {{0, 0, 2}, {1, 1, 2}, {2, 2, 2}};
+  const std::string withoutTags = *renderDistanceMapSvg(picture);
+  auto uses = [](const std::string& svg) {
+    size_t count = 0;
+    for (size_t at = svg.find("<use"); at != std::string::npos; at = svg.find("<use", at + 1)) {
+      ++count;
+    }
+    return count;
+  };
+  // The tags' 15 characters, and the legend row's text; the caption's second line too.
+  EXPECT_GT(uses(withTags), uses(withoutTags) + 15);
+}
+
+TEST(DistanceMapSvg, KeepsABigSceneSmall) {
+  const BigScene scene(150);
+  const Result<std::string> svg = renderDistanceMapSvg(scene.picture);
+  ASSERT_TRUE(svg.ok()) << svg.error();
+  tinyxml2::XMLDocument document;
+  ASSERT_EQ(document.Parse(svg->data(), svg->size()), tinyxml2::XML_SUCCESS);
+  size_t circles = 0;
+  size_t squares = 0;
+  for (int d = 0; d <= kDarkRampEnd; ++d) {
+    squares += static_cast<size_t>(countMapSquares(document.RootElement(), distanceColor(d)));
+  }
+  for (size_t at = svg->find("<circle"); at != std::string::npos;
+       at = svg->find("<circle", at + 1)) {
+    ++circles;
+  }
+  EXPECT_EQ(circles, 150u * 150u);
+  EXPECT_EQ(squares, 149u * 149u);
+  // About 45 bytes a cell, and the glyphs of the text.
+  EXPECT_LT(svg->size(), (circles + squares) * 60 + 200000) << svg->size();
 }
 
 }  // namespace

@@ -42,18 +42,32 @@ void addReach(CLI::App& app) {
                       "the module there, else the one at the goal (as for run)");
   args->rules.addTo(*command);
   addOutputOption(*command, args->out);
-  command->add_option("--png", args->png, "Write the distance map as a PNG picture");
-  command->add_option("--svg", args->svg, "Write the distance map as an SVG picture");
+  PictureRequest& asked = args->pictures;
+  command->add_option("--png", asked.png, "Write the distance map as a PNG picture");
+  command->add_option("--svg", asked.svg, "Write the distance map as an SVG picture");
+  command
+      ->add_option("--scale", asked.scale,
+                   "Pixels per cell in the pictures, 2..256 (default 48, lowered to fit "
+                   "--max-size)")
+      ->check(CLI::Range(2, 256));
+  command
+      ->add_option("--max-size", asked.maxSize,
+                   "Longest side of a picture in pixels: a larger one is drawn at a smaller scale "
+                   "(default 4000 without --scale, no limit with it; 0: no limit). A picture "
+                   "drawn smaller than asked, or whose cells are too small for their numbers, "
+                   "says so under its title and on standard error")
+      ->check(CLI::NonNegativeNumber);
   command->callback([args] {
+    const PictureRequest& pictures = args->pictures;
     // Pictures are files (never standard output): only --out may be "-".
     std::vector<NamedPath> outputs = {{"--out", args->out}};
-    if (!args->png.empty()) outputs.push_back({"--png", args->png});
-    if (!args->svg.empty()) outputs.push_back({"--svg", args->svg});
+    if (!pictures.png.empty()) outputs.push_back({"--png", pictures.png});
+    if (!pictures.svg.empty()) outputs.push_back({"--svg", pictures.svg});
     refuseClashes({{"scene", args->scene}}, outputs);
     // A picture's format is its option's: a file named otherwise would hold what its name
     // does not say.
     for (const auto& [option, path, extension] :
-         {std::tuple{"--png", args->png, ".png"}, std::tuple{"--svg", args->svg, ".svg"}}) {
+         {std::tuple{"--png", pictures.png, ".png"}, std::tuple{"--svg", pictures.svg, ".svg"}}) {
       std::string given = std::filesystem::path(path).extension().string();
       for (char& c : given) c = char(std::tolower(static_cast<unsigned char>(c)));
       if (!path.empty() && given != extension) {
@@ -70,6 +84,7 @@ void addReach(CLI::App& app) {
     const experiment::MobileChoice mobile =
         unwrap(experiment::chooseMobile(scene.world, goal, start));
     if (mobile.module) check(scene.world.remove(*mobile.module));
+    const bool mobileTakenOut = mobile.module.has_value();
     // A goal next to no module is reached by nothing: say so rather than draw an empty map.
     bool touches = false;
     for (int d = 0; d < geometry::kDirectionCount && !touches; ++d) {

@@ -9,6 +9,7 @@ namespace datomsim::algorithms {
 using geometry::Cell;
 
 void FollowGradientProgram::onTimer(program::ModuleContext& context, int tag) {
+  GradientProgram::onTimer(context, tag);
   if (tag != kFollowTrigger || !isMobile(context) || phase_ != Phase::kIdle) return;
   path_ = {context.cell()};
   step(context);

@@ -8,7 +8,8 @@ using geometry::Cell;
 
 void GradientProgram::onStart(program::ModuleContext& context) {
   if (isMobile(context)) return;
-  // The modules around G start the gradient: G is at distance 0 (paper, section VII).
+  // The modules around G start the gradient: G is at distance 0 (paper, section VII), which each
+  // of them knows by itself.
   if (const auto direction = geometry::directionOfOffset(parameters_.goal - context.cell())) {
     learn(context, *direction, 0);
   }
@@ -38,6 +39,19 @@ void GradientProgram::onMessage(program::ModuleContext& context, int ownConnecto
   }
 }
 
+void GradientProgram::onTimer(program::ModuleContext& context, int tag) {
+  if (tag != kTellTimer) return;
+  // The end of the instant: every message that arrived with the one that armed the timer has been
+  // heard (they were sent before it was set), so each cell found is told once, at its best.
+  const uint16_t untold = untold_;
+  untold_ = 0;
+  for (int d = 0; d < geometry::kDirectionCount; ++d) {
+    if (untold & (1u << d)) {
+      spread(context, context.cell() + geometry::neighbourOffset(d), distances_[d]);
+    }
+  }
+}
+
 int32_t GradientProgram::distanceOf(program::ModuleContext& context, const Cell& cell) const {
   const auto direction = geometry::directionOfOffset(cell - context.cell());
   return direction ? distances_[*direction] : kUnknown;
@@ -53,47 +67,75 @@ std::vector<std::pair<Cell, int32_t>> GradientProgram::knownDistances(const Cell
 }
 
 void GradientProgram::spread(program::ModuleContext& context, const Cell& cell, int32_t distance) {
-  // Which module sits behind each latched connector.
+  const Cell self = context.cell();
   const uint16_t latched = context.latchedConnectors();
+  const geometry::Orientation orientation = context.orientation();
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     const Cell around = cell + geometry::neighbourOffset(d);
-    if (around == context.cell() || !context.occupied(around).value_or(false)) continue;
-    int connector = -1;
-    for (int k = 0; k < geometry::kDirectionCount; ++k) {
-      if ((latched & (1u << k)) && context.cellBehind(k) == around) connector = k;
+    if (around == self || !context.occupied(around).value_or(false)) continue;
+    // A module around the cell that is this module's neighbour, latched: straight there.
+    if (const auto direction = geometry::directionOfOffset(around - self)) {
+      const int connector = orientation.ownConnector(*direction);
+      if (latched & (1u << connector)) {
+        recordFailure(context.send(connector, Message::of(DistanceMsg{cell, distance})));
+        continue;
+      }
     }
-    if (connector >= 0) {
-      recordFailure(context.send(connector, Message::of(DistanceMsg{cell, distance})));
-    } else {
-      DistanceNotice notice;
-      notice.target = around;
-      notice.origin = context.cell();
-      notice.request = nextNotice_++;
-      notice.cell = cell;
-      notice.distance = distance;
-      recordFailure(router_.send(context, notice));
-    }
+    DistanceNotice notice;
+    notice.target = around;
+    notice.origin = self;
+    notice.request = nextNotice_++;
+    notice.cell = cell;
+    notice.distance = distance;
+    recordFailure(router_.send(context, notice));
   }
 }
 
 void GradientProgram::learn(program::ModuleContext& context, int direction, int32_t distance) {
-  // A worklist rather than recursion: one improvement can cascade around the module.
-  std::vector<std::pair<int, int32_t>> pending = {{direction, distance}};
-  while (!pending.empty()) {
-    const auto [d, value] = pending.back();
-    pending.pop_back();
+  // The cells around this module whose distance it is about to lower, smallest first: one
+  // improvement can cascade around the module (as the pivot it moves a mobile from one of its
+  // neighbouring cells to another), and taking the smallest first sets each cell once per cascade,
+  // at its best value.
+  std::array<int32_t, geometry::kDirectionCount> pending;
+  pending.fill(kUnknown);
+  uint16_t queued = uint16_t(1u << direction);
+  pending[direction] = distance;
+  // The value the cascade starts from is known around its cell; the ones it finds are not.
+  bool found = false;
+  while (queued) {
+    int d = -1;
+    for (int k = 0; k < geometry::kDirectionCount; ++k) {
+      if ((queued & (1u << k)) && (d < 0 || pending[k] < pending[d])) d = k;
+    }
+    queued &= uint16_t(~(1u << d));
+    const int32_t value = pending[d];
+    pending[d] = kUnknown;
+    const bool heard = !found;
+    found = true;
+    // Heard what this module found and has not told yet: every module around the cell heard it.
+    if (heard && value == distances_[d]) untold_ &= uint16_t(~(1u << d));
     if (value >= distances_[d]) continue;
     distances_[d] = value;
     const Cell cell = context.cell() + geometry::neighbourOffset(d);
 
-    spread(context, cell, value);
+    if (heard) {
+      // The module that found it told every module around the cell: telling them again would
+      // only echo it. A value found here and not told yet is bettered: nothing to tell.
+      untold_ &= uint16_t(~(1u << d));
+    } else {
+      if (!untold_) context.setTimer(0, kTellTimer);
+      untold_ |= uint16_t(1u << d);
+    }
 
     // As the pivot, every motion from that cell leads to a neighbour at value + 1.
     std::array<Cell, 6> goals;
     const int count = context.goalsAsPivot(cell, goals);
     for (int i = 0; i < count; ++i) {
       const auto goal = geometry::directionOfOffset(goals[i] - context.cell());
-      if (goal && value + 1 < distances_[*goal]) pending.push_back({*goal, value + 1});
+      if (goal && value + 1 < distances_[*goal] && value + 1 < pending[*goal]) {
+        pending[*goal] = value + 1;
+        queued |= uint16_t(1u << *goal);
+      }
     }
   }
 }

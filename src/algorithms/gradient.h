@@ -4,11 +4,14 @@
 // mobile needs from there to the goal G). The modules around G start with 0. A module that learns
 // a better distance for a neighbouring cell X judges, as the pivot, every rule that moves a mobile
 // imagined at X (from its own neighbourhood, ModuleContext::goalsAsPivot); each valid goal Y, a
-// neighbour of the pivot too, gets distance(X) + 1 if that is better. Every improvement is sent in
-// to every module around the cell: in a DistanceMsg to a latched neighbour, or routed hop by hop
-// (DistanceNotice) to the others, which the module senses as it senses the cells of a rule. Only
-// improvements travel, so the exchange ends; the distances then equal the breadth-first gradient
-// of motion::reach.
+// neighbour of the pivot too, gets distance(X) + 1 if that is better. A distance a module finds so
+// is told to every module around its cell: in a DistanceMsg to a latched neighbour, or routed hop
+// by hop (DistanceNotice) to the others, which the module senses as it senses the cells of a rule.
+// A distance heard is not told again: its finder told every module around the cell. A module
+// tells what it found at the end of the instant (a timer of no delay), once per cell with the best
+// value it found then, so that messages arriving together, each lowering a cell a little, cost one
+// telling, not one each. Only improvements travel, so the exchange ends; the distances then equal
+// the breadth-first gradient of motion::reach.
 #pragma once
 
 #include <array>
@@ -52,9 +55,13 @@ class GradientProgram : public program::ModuleProgram {
 
   explicit GradientProgram(const GradientParameters& parameters) : parameters_(parameters) {}
 
+  // The timer tag of telling what a module found; programs built on this one use other tags.
+  static constexpr int kTellTimer = -1;
+
   void onStart(program::ModuleContext& context) override;
   void onMessage(program::ModuleContext& context, int ownConnector,
                  const Message& message) override;
+  void onTimer(program::ModuleContext& context, int tag) override;
 
   // The distance this module stores for a neighbouring cell, or kUnknown.
   int32_t distanceOf(program::ModuleContext& context, const geometry::Cell& cell) const;
@@ -85,12 +92,16 @@ class GradientProgram : public program::ModuleProgram {
   // Tells every module around the cell its new distance.
   void spread(program::ModuleContext& context, const geometry::Cell& cell, int32_t distance);
 
-  // Stores a better distance for the neighbour cell in world direction d, then spreads it.
+  // Stores a better distance for the neighbour cell in world direction d, one that every module
+  // around the cell knows (heard from the module that found it, or G's 0), and follows what it
+  // implies around this module: the distances found are told around their cells.
   void learn(program::ModuleContext& context, int direction, int32_t distance);
 
   GradientParameters parameters_;
   // Allocated only when the program gives up: most modules never do, and idle state stays small.
   std::unique_ptr<std::string> failure_;
+  // Bit d set: the distance of the cell in world direction d was found here and is not told yet.
+  uint16_t untold_ = 0;
   std::array<int32_t, 12> distances_{kUnknown, kUnknown, kUnknown, kUnknown, kUnknown, kUnknown,
                                      kUnknown, kUnknown, kUnknown, kUnknown, kUnknown, kUnknown};
 };

@@ -76,12 +76,30 @@ constexpr int oppositeDirection(int direction) {
   return (direction + 6) % 12;
 }
 
+namespace detail {
+
+// The direction of each offset with components in -1..1, by (x+1)*9 + (y+1)*3 + (z+1); -1 for the
+// 15 offsets that are not neighbours. Programs ask this for every message: one load, not a search.
+inline constexpr std::array<int8_t, 27> kDirectionOfSmallOffset = [] {
+  std::array<int8_t, 27> table{};
+  table.fill(-1);
+  for (int d = 0; d < kDirectionCount; ++d) {
+    const Cell& o = kNeighbourOffsets[d];
+    table[(o.x + 1) * 9 + (o.y + 1) * 3 + (o.z + 1)] = int8_t(d);
+  }
+  return table;
+}();
+
+}  // namespace detail
+
 // The direction whose offset is `offset`, if it is one of the 12 neighbour offsets.
 constexpr std::optional<int> directionOfOffset(const Cell& offset) {
-  for (int d = 0; d < kDirectionCount; ++d) {
-    if (detail::kNeighbourOffsets[d] == offset) return d;
-  }
-  return std::nullopt;
+  const auto small = [](int32_t v) { return v >= -1 && v <= 1; };
+  if (!small(offset.x) || !small(offset.y) || !small(offset.z)) return std::nullopt;
+  const int8_t d =
+      detail::kDirectionOfSmallOffset[(offset.x + 1) * 9 + (offset.y + 1) * 3 + (offset.z + 1)];
+  if (d < 0) return std::nullopt;
+  return d;
 }
 
 // Twice the piston vector of axis a, in skew cell units (docs/conventions.md, section 2 table).

@@ -39,15 +39,24 @@ void JsonObjectStream::cellValues(std::string_view key,
 
 void JsonObjectStream::cellValues(std::string_view key,
                                   const std::vector<std::pair<geometry::Cell, double>>& list) {
+  cellValues(key, [&](const CellValue& write) {
+    for (const auto& [cell, value] : list) write(cell, value);
+  });
+}
+
+void JsonObjectStream::cellValues(std::string_view key,
+                                  const std::function<void(const CellValue&)>& source) {
   open(key);
   buffer_.push_back('[');
-  for (size_t i = 0; i < list.size(); ++i) {
-    cellStart(list[i].first, i == 0);
+  bool first = true;
+  source([&](const geometry::Cell& cell, double value) {
+    cellStart(cell, first);
+    first = false;
     buffer_.push_back(',');
-    number(list[i].second);
+    number(value);
     buffer_.push_back(']');
     flushIfFull();
-  }
+  });
   buffer_.push_back(']');
   flush();
 }

@@ -30,6 +30,9 @@ class JsonObjectStream {
   // [[x,y,z,value], ...]; whole numbers print as integers, others as nlohmann prints them.
   void cellValues(std::string_view key, const std::vector<std::pair<geometry::Cell, int>>& list);
   void cellValues(std::string_view key, const std::vector<std::pair<geometry::Cell, double>>& list);
+  // The same from a source that calls its argument once per cell, in order: nothing is gathered.
+  using CellValue = std::function<void(const geometry::Cell&, double)>;
+  void cellValues(std::string_view key, const std::function<void(const CellValue&)>& source);
   // Ends the object and the line.
   void close();
 

@@ -36,8 +36,12 @@ void streamRunJson(const algorithms::ProgramInfo& info, const experiment::RunRes
     for (const auto& [name, value] : parameters) given[name] = value;
     out.field("parameters", given);
     out.field("stopped_at_limit", result.stoppedAtLimit);
-    for (const algorithms::ReportedValues& reported : result.reports) {
-      out.cellValues(reported.key, reported.values);
+    if (result.reports) {
+      for (const std::string& key : result.reports->keys()) {
+        out.cellValues(key, [&](const JsonObjectStream::CellValue& write) {
+          result.reports->forEach(key, write);
+        });
+      }
     }
   } else if (!info.needsGoal) {
     nlohmann::ordered_json walkers = nlohmann::ordered_json::array();

@@ -10,25 +10,26 @@ using geometry::Cell;
 
 void FollowGradientProgram::onTimer(program::ModuleContext& context, int tag) {
   GradientProgram::onTimer(context, tag);
-  if (tag != kFollowTrigger || !isMobile(context) || phase_ != Phase::kIdle) return;
-  path_ = {context.cell()};
+  if (tag != kFollowTrigger || !isMobile(context) || phase() != Phase::kIdle) return;
+  walk_ = std::make_unique<Walk>();
+  walk_->path = {context.cell()};
   step(context);
 }
 
 // Algorithm 1, followGradient(): list the valid rules and ask their pivots for distances.
 void FollowGradientProgram::step(program::ModuleContext& context) {
   if (context.cell() == parameters().goal) {
-    arrived_ = true;
-    phase_ = Phase::kDone;
+    walk_->arrived = true;
+    walk_->phase = Phase::kDone;
     return;
   }
-  candidates_.clear();
+  walk_->candidates.clear();
   for (motion::Evaluation& evaluation : context.motions()) {
     if (auto* motion = std::get_if<motion::Motion>(&evaluation)) {
-      candidates_.push_back(std::move(*motion));
+      walk_->candidates.push_back(std::move(*motion));
     }
   }
-  if (candidates_.empty()) {
+  if (walk_->candidates.empty()) {
     // Say which: nothing to turn about, or every rule refused.
     if (context.latchedConnectors() == 0) {
       return fail("at " + toString(context.cell()) +
@@ -37,34 +38,35 @@ void FollowGradientProgram::step(program::ModuleContext& context) {
     return fail("no valid motion from " + toString(context.cell()) +
                 " (datomsim moves --at lists each refusal)");
   }
-  candidateDistances_.assign(candidates_.size(), kUnknown);
-  waitingReplies_ = static_cast<int>(candidates_.size());
-  phase_ = Phase::kAsking;
-  for (size_t i = 0; i < candidates_.size(); ++i) {
-    const auto direction = geometry::directionOfOffset(candidates_[i].pivotCell - context.cell());
+  walk_->candidateDistances.assign(walk_->candidates.size(), kUnknown);
+  walk_->waitingReplies = static_cast<int>(walk_->candidates.size());
+  walk_->phase = Phase::kAsking;
+  for (size_t i = 0; i < walk_->candidates.size(); ++i) {
+    const auto direction =
+        geometry::directionOfOffset(walk_->candidates[i].pivotCell - context.cell());
     const int connector = context.orientation().ownConnector(*direction);
     const Status sent = context.send(
-        connector, Message::of(DistanceQuery{candidates_[i].goal, static_cast<int32_t>(i)}));
+        connector, Message::of(DistanceQuery{walk_->candidates[i].goal, static_cast<int32_t>(i)}));
     if (!sent.ok()) return fail(sent.error());
   }
 }
 
-// Smallest distance first; ties to the first rule in table order (candidates_ keeps it).
+// Smallest distance first; ties to the first rule in table order (walk_->candidates keeps it).
 void FollowGradientProgram::choose(program::ModuleContext& context) {
   size_t best = 0;
-  for (size_t i = 1; i < candidates_.size(); ++i) {
-    if (candidateDistances_[i] < candidateDistances_[best]) best = i;
+  for (size_t i = 1; i < walk_->candidates.size(); ++i) {
+    if (walk_->candidateDistances[i] < walk_->candidateDistances[best]) best = i;
   }
-  if (candidateDistances_[best] == kUnknown) {
+  if (walk_->candidateDistances[best] == kUnknown) {
     return fail("no pivot knows a distance to the goal from the cells around " +
                 toString(context.cell()) + ": the goal is not reachable from there");
   }
-  chosen_ = candidates_[best];
-  phase_ = Phase::kDeforming;
-  waitingAcks_ = sendToBlockingModules<DeformMsg>(context);
-  if (waitingAcks_ == 0) {
-    phase_ = Phase::kMoving;
-    const MoveResult moving = context.move(*chosen_);
+  walk_->chosen = walk_->candidates[best];
+  walk_->phase = Phase::kDeforming;
+  walk_->waitingAcks = sendToBlockingModules<DeformMsg>(context);
+  if (walk_->waitingAcks == 0) {
+    walk_->phase = Phase::kMoving;
+    const MoveResult moving = context.move(*walk_->chosen);
     if (!moving.ok()) fail(moving.error());
   }
 }
@@ -72,11 +74,11 @@ void FollowGradientProgram::choose(program::ModuleContext& context) {
 template <typename T>
 int FollowGradientProgram::sendToBlockingModules(program::ModuleContext& context) {
   int sent = 0;
-  for (const motion::Deformation& d : chosen_->deformations) {
+  for (const motion::Deformation& d : walk_->chosen->deformations) {
     T message;
     message.target = d.cell;
     message.origin = context.cell();
-    message.request = nextRequest_++;
+    message.request = walk_->nextRequest++;
     message.axis = d.firstAxis;
     recordFailure(router_.send(context, message));
     ++sent;
@@ -85,10 +87,10 @@ int FollowGradientProgram::sendToBlockingModules(program::ModuleContext& context
 }
 
 void FollowGradientProgram::onMotionDone(program::ModuleContext& context) {
-  path_.push_back(context.cell());
-  phase_ = Phase::kReleasing;
-  waitingAcks_ = sendToBlockingModules<ReleaseMsg>(context);
-  if (waitingAcks_ == 0) step(context);
+  walk_->path.push_back(context.cell());
+  walk_->phase = Phase::kReleasing;
+  walk_->waitingAcks = sendToBlockingModules<ReleaseMsg>(context);
+  if (walk_->waitingAcks == 0) step(context);
 }
 
 void FollowGradientProgram::onMessage(program::ModuleContext& context, int ownConnector,
@@ -101,12 +103,12 @@ void FollowGradientProgram::onMessage(program::ModuleContext& context, int ownCo
     return;
   }
   if (const auto* reply = message.as<DistanceReply>()) {
-    if (phase_ != Phase::kAsking || reply->candidate < 0 ||
-        reply->candidate >= int32_t(candidates_.size())) {
+    if (phase() != Phase::kAsking || reply->candidate < 0 ||
+        reply->candidate >= int32_t(walk_->candidates.size())) {
       return;
     }
-    candidateDistances_[reply->candidate] = reply->distance;
-    if (--waitingReplies_ == 0) choose(context);
+    walk_->candidateDistances[reply->candidate] = reply->distance;
+    if (--walk_->waitingReplies == 0) choose(context);
     return;
   }
   // Routed messages: handled at the target cell, forwarded elsewhere.
@@ -141,15 +143,15 @@ void FollowGradientProgram::handleRouted(program::ModuleContext& context, const 
     releasing_ = true;
     const Status status = context.release();
     if (!status.ok()) fail(status.error());
-  } else if (type == AckDeform::kName && phase_ == Phase::kDeforming) {
+  } else if (type == AckDeform::kName && phase() == Phase::kDeforming) {
     // Algorithm 1, AckDeform handler: move once every blocking module has answered.
-    if (--waitingAcks_ == 0) {
-      phase_ = Phase::kMoving;
-      const MoveResult moving = context.move(*chosen_);
+    if (--walk_->waitingAcks == 0) {
+      walk_->phase = Phase::kMoving;
+      const MoveResult moving = context.move(*walk_->chosen);
       if (!moving.ok()) fail(moving.error());
     }
-  } else if (type == AckRelease::kName && phase_ == Phase::kReleasing) {
-    if (--waitingAcks_ == 0) step(context);
+  } else if (type == AckRelease::kName && phase() == Phase::kReleasing) {
+    if (--walk_->waitingAcks == 0) step(context);
   }
 }
 
@@ -167,19 +169,26 @@ void FollowGradientProgram::onDeformationDone(program::ModuleContext& context) {
   pending_.reset();
 }
 
+const std::vector<Cell>& FollowGradientProgram::path() const {
+  static const std::vector<Cell> kNone;
+  return walk_ ? walk_->path : kNone;
+}
+
 std::string FollowGradientProgram::describeWait() const {
-  const std::string at = path_.empty() ? "before starting" : "at " + toString(path_.back());
-  switch (phase_) {
+  if (!walk_) return "it was never started";
+  const std::string at =
+      walk_->path.empty() ? "before starting" : "at " + toString(walk_->path.back());
+  switch (walk_->phase) {
     case Phase::kIdle:
       return "it was never started";
     case Phase::kAsking:
-      return fmt::format("{} it waits for {} DistanceReply", at, waitingReplies_);
+      return fmt::format("{} it waits for {} DistanceReply", at, walk_->waitingReplies);
     case Phase::kDeforming:
-      return fmt::format("{} it waits for {} AckDeform", at, waitingAcks_);
+      return fmt::format("{} it waits for {} AckDeform", at, walk_->waitingAcks);
     case Phase::kMoving:
       return fmt::format("{} its motion never ended", at);
     case Phase::kReleasing:
-      return fmt::format("{} it waits for {} AckRelease", at, waitingAcks_);
+      return fmt::format("{} it waits for {} AckRelease", at, walk_->waitingAcks);
     case Phase::kDone:
       return fmt::format("{} it stopped", at);
   }
@@ -187,7 +196,7 @@ std::string FollowGradientProgram::describeWait() const {
 }
 
 void FollowGradientProgram::fail(const std::string& why) {
-  phase_ = Phase::kDone;
+  if (walk_) walk_->phase = Phase::kDone;
   recordFailure(why);
 }
 

@@ -12,6 +12,7 @@
 // Deformation messages travel hop by hop between latched neighbours (routing.h).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -48,8 +49,8 @@ class FollowGradientProgram : public GradientProgram {
   void onMotionDone(program::ModuleContext& context) override;
 
   // The mobile's cells, start first; and whether it reached G.
-  const std::vector<geometry::Cell>& path() const { return path_; }
-  bool arrived() const { return arrived_; }
+  const std::vector<geometry::Cell>& path() const;
+  bool arrived() const { return walk_ && walk_->arrived; }
   // What the mobile is doing or waiting for, for a run that ends before it arrives.
   std::string describeWait() const;
 
@@ -67,17 +68,21 @@ class FollowGradientProgram : public GradientProgram {
                     std::string_view type);
 
   enum class Phase { kIdle, kAsking, kDeforming, kMoving, kReleasing, kDone };
+  Phase phase() const { return walk_ ? walk_->phase : Phase::kIdle; }
 
-  // Mobile state.
-  Phase phase_ = Phase::kIdle;
-  std::vector<motion::Motion> candidates_;
-  std::vector<int32_t> candidateDistances_;
-  int waitingReplies_ = 0;
-  std::optional<motion::Motion> chosen_;
-  int waitingAcks_ = 0;
-  uint32_t nextRequest_ = 1;
-  std::vector<geometry::Cell> path_;
-  bool arrived_ = false;
+  // The mobile's state, made when it is triggered: the other modules (all but one) keep none.
+  struct Walk {
+    Phase phase = Phase::kIdle;
+    std::vector<motion::Motion> candidates;
+    std::vector<int32_t> candidateDistances;
+    int waitingReplies = 0;
+    std::optional<motion::Motion> chosen;
+    int waitingAcks = 0;
+    uint32_t nextRequest = 1;
+    std::vector<geometry::Cell> path;
+    bool arrived = false;
+  };
+  std::unique_ptr<Walk> walk_;
   // Blocking module state: who asked, to answer once the piston is done.
   std::optional<RoutedMsg> pending_;
   bool releasing_ = false;

@@ -10,7 +10,7 @@ void GradientProgram::onStart(program::ModuleContext& context) {
   if (isMobile(context)) return;
   // The modules around G start the gradient: G is at distance 0 (paper, section VII), which each
   // of them knows by itself.
-  if (const auto direction = geometry::directionOfOffset(parameters_.goal - context.cell())) {
+  if (const auto direction = geometry::directionOfOffset(parameters_->goal - context.cell())) {
     learn(context, *direction, 0);
   }
 }
@@ -47,23 +47,28 @@ void GradientProgram::onTimer(program::ModuleContext& context, int tag) {
   untold_ = 0;
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     if (untold & (1u << d)) {
-      spread(context, context.cell() + geometry::neighbourOffset(d), distances_[d]);
+      spread(context, context.cell() + geometry::neighbourOffset(d), distanceTowards(d));
     }
   }
 }
 
 int32_t GradientProgram::distanceOf(program::ModuleContext& context, const Cell& cell) const {
   const auto direction = geometry::directionOfOffset(cell - context.cell());
-  return direction ? distances_[*direction] : kUnknown;
+  return direction ? distanceTowards(*direction) : kUnknown;
 }
 
-std::vector<std::pair<Cell, int32_t>> GradientProgram::knownDistances(const Cell& self) const {
-  std::vector<std::pair<Cell, int32_t>> out;
-  for (int d = 0; d < geometry::kDirectionCount; ++d) {
-    if (distances_[d] != kUnknown)
-      out.push_back({self + geometry::neighbourOffset(d), distances_[d]});
+void GradientProgram::setDistance(int direction, int32_t distance) {
+  if (!(rare_ && rare_->wide) && distance >= 0 && distance < kNarrowUnknown) {
+    narrow_[size_t(direction)] = uint16_t(distance);
+    return;
   }
-  return out;
+  Rare& state = rare();
+  if (!state.wide) {
+    state.wide = std::make_unique<std::array<int32_t, 12>>();
+    for (int d = 0; d < geometry::kDirectionCount; ++d)
+      (*state.wide)[size_t(d)] = distanceTowards(d);
+  }
+  (*state.wide)[size_t(direction)] = distance;
 }
 
 void GradientProgram::spread(program::ModuleContext& context, const Cell& cell, int32_t distance) {
@@ -113,9 +118,9 @@ void GradientProgram::learn(program::ModuleContext& context, int direction, int3
     const bool heard = !found;
     found = true;
     // Heard what this module found and has not told yet: every module around the cell heard it.
-    if (heard && value == distances_[d]) untold_ &= uint16_t(~(1u << d));
-    if (value >= distances_[d]) continue;
-    distances_[d] = value;
+    if (heard && value == distanceTowards(d)) untold_ &= uint16_t(~(1u << d));
+    if (value >= distanceTowards(d)) continue;
+    setDistance(d, value);
     const Cell cell = context.cell() + geometry::neighbourOffset(d);
 
     if (heard) {
@@ -132,7 +137,7 @@ void GradientProgram::learn(program::ModuleContext& context, int direction, int3
     const int count = context.goalsAsPivot(cell, goals);
     for (int i = 0; i < count; ++i) {
       const auto goal = geometry::directionOfOffset(goals[i] - context.cell());
-      if (goal && value + 1 < distances_[*goal] && value + 1 < pending[*goal]) {
+      if (goal && value + 1 < distanceTowards(*goal) && value + 1 < pending[*goal]) {
         pending[*goal] = value + 1;
         queued |= uint16_t(1u << *goal);
       }

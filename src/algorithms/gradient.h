@@ -53,7 +53,9 @@ class GradientProgram : public program::ModuleProgram {
  public:
   static constexpr int32_t kUnknown = INT32_MAX;
 
-  explicit GradientProgram(const GradientParameters& parameters) : parameters_(parameters) {}
+  // `parameters` are shared by every module's program and must outlive it (the run's ProgramSet
+  // keeps them).
+  explicit GradientProgram(const GradientParameters& parameters) : parameters_(&parameters) {}
 
   // The timer tag of telling what a module found; programs built on this one use other tags.
   static constexpr int kTellTimer = -1;
@@ -65,30 +67,48 @@ class GradientProgram : public program::ModuleProgram {
 
   // The distance this module stores for a neighbouring cell, or kUnknown.
   int32_t distanceOf(program::ModuleContext& context, const geometry::Cell& cell) const;
-  // The cells this module knows a distance for.
-  std::vector<std::pair<geometry::Cell, int32_t>> knownDistances(const geometry::Cell& self) const;
-  // Why this module's program gave up (a refused message, compression or motion), if it did.
-  std::optional<std::string> failure() const {
-    return failure_ ? std::optional<std::string>(*failure_) : std::nullopt;
+  // The distance stored for the neighbouring cell in world direction d, or kUnknown.
+  int32_t distanceTowards(int direction) const {
+    if (rare_ && rare_->wide) return (*rare_->wide)[size_t(direction)];
+    const uint16_t narrow = narrow_[size_t(direction)];
+    return narrow == kNarrowUnknown ? kUnknown : narrow;
   }
+  // Why this module's program gave up (a refused message, compression or motion), if it did.
+  std::optional<std::string> failure() const { return rare_ ? rare_->failure : std::nullopt; }
 
  protected:
   bool isMobile(const program::ModuleContext& context) const {
-    return context.id() == parameters_.mobile;
+    return context.id() == parameters_->mobile;
   }
-  const GradientParameters& parameters() const { return parameters_; }
+  const GradientParameters& parameters() const { return *parameters_; }
   // Keeps the first reason this module gave up; a status that is ok changes nothing.
   void recordFailure(const std::string& why) {
-    if (!failure_) failure_ = std::make_unique<std::string>(why);
+    if (!rare().failure) rare().failure = why;
   }
   void recordFailure(const Status& status) {
     if (!status.ok()) recordFailure(status.error());
   }
 
   Router router_;
-  uint32_t nextNotice_ = 1;  // numbers this module's routed notices, for the router's dedup
 
  private:
+  // Distances are kept in 16 bits (a million modules storing twelve each spend 24 MB less than in
+  // 32), with this value for "unknown"; the first distance that does not fit moves all twelve to
+  // a wide table of the rare state.
+  static constexpr uint16_t kNarrowUnknown = UINT16_MAX;
+
+  // What few modules need: a failure, distances beyond 16 bits. Allocated on first use, so that
+  // a module's idle state stays small.
+  struct Rare {
+    std::optional<std::string> failure;
+    std::unique_ptr<std::array<int32_t, 12>> wide;
+  };
+  Rare& rare() {
+    if (!rare_) rare_ = std::make_unique<Rare>();
+    return *rare_;
+  }
+  void setDistance(int direction, int32_t distance);
+
   // Tells every module around the cell its new distance.
   void spread(program::ModuleContext& context, const geometry::Cell& cell, int32_t distance);
 
@@ -97,13 +117,14 @@ class GradientProgram : public program::ModuleProgram {
   // implies around this module: the distances found are told around their cells.
   void learn(program::ModuleContext& context, int direction, int32_t distance);
 
-  GradientParameters parameters_;
-  // Allocated only when the program gives up: most modules never do, and idle state stays small.
-  std::unique_ptr<std::string> failure_;
+  const GradientParameters* parameters_;
+  std::unique_ptr<Rare> rare_;
   // Bit d set: the distance of the cell in world direction d was found here and is not told yet.
   uint16_t untold_ = 0;
-  std::array<int32_t, 12> distances_{kUnknown, kUnknown, kUnknown, kUnknown, kUnknown, kUnknown,
-                                     kUnknown, kUnknown, kUnknown, kUnknown, kUnknown, kUnknown};
+  std::array<uint16_t, 12> narrow_{kNarrowUnknown, kNarrowUnknown, kNarrowUnknown, kNarrowUnknown,
+                                   kNarrowUnknown, kNarrowUnknown, kNarrowUnknown, kNarrowUnknown,
+                                   kNarrowUnknown, kNarrowUnknown, kNarrowUnknown, kNarrowUnknown};
+  uint32_t nextNotice_ = 1;  // numbers this module's routed notices, for the router's dedup
 };
 
 }  // namespace datomsim::algorithms

@@ -10,51 +10,83 @@
 #include "algorithms/flood.h"
 #include "algorithms/follow_gradient.h"
 #include "algorithms/walkers.h"
-#include "api/program_adapter.h"
+#include "api/program_host.h"
+#include "geometry/lattice.h"
 
 namespace datomsim::algorithms {
 
 namespace {
 
-// The programs of one kind, each kept with its module.
+// The programs of one kind, all made up front in one array by slot: a module's program costs its
+// own size and no allocation (a million gradient programs would otherwise be a million
+// allocations, each with its header). Made in slot order, not id order: these programs take
+// nothing from the order they are made in.
 template <typename Program>
 class TypedPrograms final : public ProgramSet {
  public:
   TypedPrograms(const ProgramParameters& parameters, size_t moduleCount)
-      : parameters_(parameters.gradient), target_(parameters.target) {
-    made_.reserve(moduleCount);
+      : parameters_(parameters.gradient), target_(parameters.target), ids_(moduleCount) {
+    programs_.reserve(moduleCount);
+    for (size_t i = 0; i < moduleCount; ++i) emplaceProgram();
   }
 
-  std::unique_ptr<program::ModuleProgram> make(ModuleId id) override {
-    auto program = makeProgram();
-    made_.push_back({id, program.get()});
-    return program;
+  void make(ModuleId id, uint32_t slot) override {
+    if (slot >= programs_.size()) {
+      throw std::logic_error(
+          fmt::format("no program for slot {} of {} modules", slot, programs_.size()));
+    }
+    ids_[slot] = id;
   }
+  program::ModuleProgram* programAt(uint32_t slot) override { return &programs_[slot]; }
 
   std::vector<std::pair<geometry::Cell, int>> distances(
-      const std::function<geometry::Cell(ModuleId)>& cellOf) const override {
-    std::map<geometry::Cell, int> smallest;
+      const ModulesAtEnd& modules) const override {
+    std::vector<std::pair<geometry::Cell, int>> out;
     if constexpr (kGradient) {
-      for (const auto& [id, program] : made_) {
-        if (id == parameters_.mobile) continue;
-        for (const auto& [cell, distance] : program->knownDistances(cellOf(id))) {
-          auto [it, inserted] = smallest.emplace(cell, distance);
-          if (!inserted) it->second = std::min(it->second, int(distance));
+      // Each cell once, from the first module around it (in direction order from the cell) that
+      // stores a distance for it, with the smallest that any of them stores: no table of every
+      // module's copies, which would hold each cell about four times.
+      const auto storedFor = [&](const geometry::Cell& cell, int directionFromCell) {
+        const auto slot = modules.slotAt(cell + geometry::neighbourOffset(directionFromCell));
+        if (!slot || ids_[*slot] == parameters_.mobile) return GradientProgram::kUnknown;
+        return programs_[*slot].distanceTowards(geometry::oppositeDirection(directionFromCell));
+      };
+      for (uint32_t slot = 0; slot < programs_.size(); ++slot) {
+        if (ids_[slot] == parameters_.mobile) continue;
+        const geometry::Cell self = modules.cellOf(slot);
+        for (int d = 0; d < geometry::kDirectionCount; ++d) {
+          if (programs_[slot].distanceTowards(d) == GradientProgram::kUnknown) continue;
+          const geometry::Cell cell = self + geometry::neighbourOffset(d);
+          const int towardsSelf = geometry::oppositeDirection(d);
+          int smallest = GradientProgram::kUnknown;
+          bool first = true;
+          for (int e = 0; e < geometry::kDirectionCount; ++e) {
+            const int stored = storedFor(cell, e);
+            if (stored == GradientProgram::kUnknown) continue;
+            if (smallest == GradientProgram::kUnknown && e != towardsSelf) {
+              first = false;
+              break;
+            }
+            smallest = std::min(smallest, stored);
+          }
+          if (first) out.push_back({cell, smallest});
         }
       }
+      std::sort(out.begin(), out.end());
     }
-    return {smallest.begin(), smallest.end()};
+    return out;
   }
 
   std::optional<MobileOutcome> mobile() const override {
     if constexpr (std::is_same_v<Program, FollowGradientProgram>) {
       MobileOutcome outcome;
-      for (const auto& [id, program] : made_) {
-        if (id != parameters_.mobile) continue;
-        outcome.path = program->path();
-        outcome.arrived = program->arrived();
-        outcome.failure = program->failure();
-        outcome.wait = program->describeWait();
+      for (size_t slot = 0; slot < programs_.size(); ++slot) {
+        if (ids_[slot] != parameters_.mobile) continue;
+        const Program& program = programs_[slot];
+        outcome.path = program.path();
+        outcome.arrived = program.arrived();
+        outcome.failure = program.failure();
+        outcome.wait = program.describeWait();
       }
       return outcome;
     } else {
@@ -65,9 +97,13 @@ class TypedPrograms final : public ProgramSet {
   std::vector<MoverState> movers() const override {
     std::vector<MoverState> out;
     if constexpr (std::is_same_v<Program, ReconfigureProgram>) {
-      for (const auto& [id, program] : made_) {
-        if (!program->settled()) out.push_back({id, program->describeState()});
+      for (size_t slot = 0; slot < programs_.size(); ++slot) {
+        if (!programs_[slot].settled()) {
+          out.push_back({ids_[slot], programs_[slot].describeState()});
+        }
       }
+      std::sort(out.begin(), out.end(),
+                [](const MoverState& a, const MoverState& b) { return a.id < b.id; });
     }
     return out;
   }
@@ -75,102 +111,70 @@ class TypedPrograms final : public ProgramSet {
   std::vector<WalkerOutcome> walkers() const override {
     std::vector<WalkerOutcome> outcomes;
     if constexpr (std::is_same_v<Program, WalkerProgram>) {
-      for (const auto& [id, program] : made_) {
-        if (!program->walks()) continue;
-        outcomes.push_back(
-            {id, program->steps(), program->refusals(), program->finished(), program->failure()});
+      for (size_t slot = 0; slot < programs_.size(); ++slot) {
+        const Program& program = programs_[slot];
+        if (!program.walks()) continue;
+        outcomes.push_back({ids_[slot], program.steps(), program.refusals(), program.finished(),
+                            program.failure()});
       }
+      std::sort(outcomes.begin(), outcomes.end(),
+                [](const WalkerOutcome& a, const WalkerOutcome& b) { return a.id < b.id; });
     }
     return outcomes;
   }
 
   std::optional<std::pair<ModuleId, std::string>> failure() const override {
-    for (const auto& [id, program] : made_) {
-      // A walker's failure is an outcome of the walk (walkers()), not a failed run.
-      if constexpr (kGradient || std::is_same_v<Program, ReconfigureProgram>) {
-        if (id != parameters_.mobile && program->failure()) {
-          return std::pair{id, *program->failure()};
-        }
+    // A walker's failure is an outcome of the walk (walkers()), not a failed run.
+    std::optional<std::pair<ModuleId, std::string>> first;
+    if constexpr (kGradient || std::is_same_v<Program, ReconfigureProgram>) {
+      for (size_t slot = 0; slot < programs_.size(); ++slot) {
+        if (ids_[slot] == parameters_.mobile || (first && first->first < ids_[slot])) continue;
+        if (auto why = programs_[slot].failure()) first = std::pair{ids_[slot], std::move(*why)};
       }
     }
-    return std::nullopt;
+    return first;
   }
 
  private:
   static constexpr bool kGradient = std::is_base_of_v<GradientProgram, Program>;
 
-  std::unique_ptr<Program> makeProgram() const {
+  void emplaceProgram() {
     if constexpr (kGradient) {
-      return std::make_unique<Program>(parameters_);
+      programs_.emplace_back(parameters_);
     } else if constexpr (std::is_same_v<Program, ReconfigureProgram>) {
-      return std::make_unique<Program>(target_);
+      programs_.emplace_back(target_);
     } else {
-      return std::make_unique<Program>();
+      programs_.emplace_back();
     }
   }
   GradientParameters parameters_;
   std::shared_ptr<const TargetShape> target_;
-  std::vector<std::pair<ModuleId, const Program*>> made_;  // in the order made: increasing id
+  std::vector<Program> programs_;  // by slot; never grows once made, so pointers stay valid
+  std::vector<ModuleId> ids_;      // by slot
 };
 
-// The programs of a public-API entry: each module's program behind an adapter, all sharing the
-// checked parameters.
+// The programs of a public-API entry: one host runs every module's program (api::ProgramHost),
+// made in increasing id order as the entry's make function may count on.
 class EntryPrograms final : public ProgramSet {
  public:
   EntryPrograms(const ProgramEntry& entry, Parameters parameters, size_t moduleCount)
-      : entry_(entry), parameters_(std::move(parameters)) {
-    made_.reserve(moduleCount);
-  }
+      : host_(entry, std::move(parameters), moduleCount) {}
 
-  std::unique_ptr<program::ModuleProgram> make(ModuleId id) override {
-    std::unique_ptr<Program> made = entry_.make(id, parameters_);
-    if (!made) {
-      throw std::logic_error(
-          fmt::format("program {} made no program for module {}", entry_.name, id.value));
-    }
-    auto program = std::make_unique<api::ProgramAdapter>(std::move(made), parameters_);
-    made_.push_back({id, program.get()});
-    return program;
-  }
+  void make(ModuleId id, uint32_t slot) override { host_.make(id, slot); }
+  program::ModuleProgram* programAt(uint32_t) override { return &host_; }
 
-  std::vector<std::pair<geometry::Cell, int>> distances(
-      const std::function<geometry::Cell(ModuleId)>&) const override {
+  std::vector<std::pair<geometry::Cell, int>> distances(const ModulesAtEnd&) const override {
     return {};
   }
   std::optional<MobileOutcome> mobile() const override { return std::nullopt; }
   std::optional<std::pair<ModuleId, std::string>> failure() const override { return std::nullopt; }
 
-  std::vector<ReportedValues> reports(
-      const std::function<geometry::Cell(ModuleId)>& cellOf) const override {
-    struct Collector final : Report {
-      void set(std::string_view key, double value) override {
-        auto [values, added] = byKey.try_emplace(std::string(key));
-        // Most keys are reported by every module: room for all at once, not by doubling.
-        if (added) values->second.reserve(moduleCount);
-        values->second.push_back({cell, value});
-      }
-      size_t moduleCount = 0;
-      geometry::Cell cell;
-      std::map<std::string, std::vector<std::pair<geometry::Cell, double>>> byKey;
-    } collector;
-    collector.moduleCount = made_.size();
-    for (const auto& [id, program] : made_) {
-      collector.cell = cellOf(id);
-      program->program().report(collector);
-    }
-    std::vector<ReportedValues> out;
-    for (auto& [key, values] : collector.byKey) {
-      // Modules in id order are often in cell order already (generated scenes): then no sort.
-      if (!std::is_sorted(values.begin(), values.end())) std::sort(values.begin(), values.end());
-      out.push_back({key, std::move(values)});
-    }
-    return out;
+  void report(uint32_t slot, Report& report) const override {
+    if (const Program* program = host_.program(slot)) program->report(report);
   }
 
  private:
-  const ProgramEntry& entry_;
-  Parameters parameters_;
-  std::vector<std::pair<ModuleId, const api::ProgramAdapter*>> made_;
+  api::ProgramHost host_;
 };
 
 template <typename Program>

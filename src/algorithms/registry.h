@@ -70,11 +70,13 @@ struct MobileOutcome {
   std::string wait;                    // what it waited for when the run ended
 };
 
-// What the modules of a public-API program reported at the end of the run under one key, by
-// cell (Program::report).
-struct ReportedValues {
-  std::string key;
-  std::vector<std::pair<geometry::Cell, double>> values;  // sorted by cell
+// The modules of a run at its end, by slot (ModuleContext::slot), as the driver sees them: what a
+// program set needs besides its programs to read their results.
+struct ModulesAtEnd {
+  size_t count = 0;
+  std::function<geometry::Cell(uint32_t slot)> cellOf;
+  // The slot of the module in a cell, if one is there.
+  std::function<std::optional<uint32_t>(const geometry::Cell&)> slotAt;
 };
 
 // A module of the reconfigure program that has not settled, and what it was doing.
@@ -92,37 +94,27 @@ struct WalkerOutcome {
   std::optional<std::string> failure;
 };
 
-// The programs of one run: makes each module's program and keeps a typed handle on it, so that
-// the driver can read the results after the run. The handles point into the programs the
-// simulator owns: read them while the simulator lives.
-class ProgramSet {
+// The programs of one run: makes each module's program, keeps it, and reads the results after the
+// run through the programs' own types. The simulator borrows the programs (Simulator::install):
+// the set must outlive it.
+class ProgramSet : public program::ProgramSource {
  public:
-  virtual ~ProgramSet() = default;
-
-  // What Simulator::install calls, once per module.
-  virtual std::unique_ptr<program::ModuleProgram> make(ModuleId id) = 0;
-  program::ProgramFactory factory() {
-    return [this](ModuleId id) { return make(id); };
-  }
-
   // Every cell a module stores a distance for, with the smallest one stored (they agree),
-  // sorted. `cellOf` gives a module's cell at the end of the run.
+  // sorted by x, then y, then z.
   virtual std::vector<std::pair<geometry::Cell, int>> distances(
-      const std::function<geometry::Cell(ModuleId)>& cellOf) const = 0;
+      const ModulesAtEnd& modules) const = 0;
   // The mobile's walk, for programs where it walks.
   virtual std::optional<MobileOutcome> mobile() const = 0;
   // Every walker, by increasing id, for the walkers program.
   virtual std::vector<WalkerOutcome> walkers() const { return {}; }
   // Every module that has not settled, by increasing id, for the reconfigure program.
   virtual std::vector<MoverState> movers() const { return {}; }
-  // The first module other than the mobile whose program gave up (a refused compression, say),
-  // in increasing id order, with its reason: as much a failed run as a stuck mobile.
+  // The module of smallest id other than the mobile whose program gave up (a refused
+  // compression, say), with its reason: as much a failed run as a stuck mobile.
   virtual std::optional<std::pair<ModuleId, std::string>> failure() const = 0;
-  // What public-API programs reported, by key in alphabetical order.
-  virtual std::vector<ReportedValues> reports(
-      const std::function<geometry::Cell(ModuleId)>& /*cellOf*/) const {
-    return {};
-  }
+  // What the program of the module in `slot` reports (public-API programs: Program::report);
+  // nothing for the others.
+  virtual void report(uint32_t /*slot*/, Report& /*report*/) const {}
 };
 
 // The programs of a named algorithm for a world of `moduleCount` modules; refuses an unknown

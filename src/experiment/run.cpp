@@ -68,6 +68,19 @@ Status checkCellParameters(const world::World& world, const ProgramEntry& entry,
   return Ok{};
 }
 
+// The final world as a program set reads it, by slot.
+algorithms::ModulesAtEnd modulesAtEnd(const world::World& world) {
+  algorithms::ModulesAtEnd modules;
+  modules.count = world.size();
+  modules.cellOf = [&world](uint32_t slot) { return world.modules()[slot].cell; };
+  modules.slotAt = [&world](const Cell& cell) -> std::optional<uint32_t> {
+    const world::Module* module = world.moduleAt(cell);
+    if (!module) return std::nullopt;
+    return uint32_t(module - world.modules().data());
+  };
+  return modules;
+}
+
 }  // namespace
 
 Result<MobileChoice> chooseMobile(const world::World& world, const Cell& goal,
@@ -197,7 +210,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   if (request.trace) trace.header(world, request.description, request.targets);
   sim::Simulator simulator(std::move(world), table, options);
   if (request.trace) simulator.subscribe(&trace);
-  simulator.install((*programs)->factory());
+  simulator.install(**programs);
 
   RunResult result;
   Status status = Ok{};
@@ -221,7 +234,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   result.mobile = mobile.value_or(ModuleId{});
   result.statistics = simulator.statistics();
   const world::World& ended = simulator.world();
-  result.distances = (*programs)->distances([&](ModuleId id) { return ended.find(id)->cell; });
+  result.distances = (*programs)->distances(modulesAtEnd(ended));
 
   if (const auto failed = (*programs)->failure(); failed && !result.failure) {
     result.failure = fmt::format("module {} failed: {}", failed->first.value, failed->second);
@@ -236,20 +249,64 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     }
   }
   result.walkers = (*programs)->walkers();
-  result.reports = (*programs)->reports([&](ModuleId id) { return ended.find(id)->cell; });
-  for (const algorithms::ReportedValues& reported : result.reports) {
-    if (isRunOutputKey(reported.key)) {
-      return Error{
-          fmt::format("program {} reports \"{}\", a key the run's output uses itself; "
-                      "report it under another name",
-                      request.program, reported.key)};
-    }
-  }
   if (request.trace) {
     trace.footer(simulator.now(), summaryJson(result.statistics));
     result.trace = trace.text();
   }
+  if (info->entry) {
+    result.reports =
+        std::make_shared<const RunReports>(std::move(*programs), std::move(simulator).ended());
+    for (const std::string& key : result.reports->keys()) {
+      if (isRunOutputKey(key)) {
+        return Error{
+            fmt::format("program {} reports \"{}\", a key the run's output uses itself; "
+                        "report it under another name",
+                        request.program, key)};
+      }
+    }
+  }
   return result;
+}
+
+RunReports::RunReports(std::unique_ptr<algorithms::ProgramSet> programs, world::World ended)
+    : programs_(std::move(programs)), world_(std::move(ended)) {
+  // The keys: one pass over every module's report.
+  struct Keys final : Report {
+    void set(std::string_view key, double) override {
+      if (std::find(names.begin(), names.end(), key) == names.end()) names.emplace_back(key);
+    }
+    std::vector<std::string> names;
+  } keys;
+  for (uint32_t slot = 0; slot < world_.size(); ++slot) programs_->report(slot, keys);
+  keys_ = std::move(keys.names);
+  std::sort(keys_.begin(), keys_.end());
+  const std::span<const world::Module> modules = world_.modules();
+  byCell_.resize(modules.size());
+  for (uint32_t i = 0; i < byCell_.size(); ++i) byCell_[i] = i;
+  std::sort(byCell_.begin(), byCell_.end(),
+            [&](uint32_t a, uint32_t b) { return modules[a].cell < modules[b].cell; });
+}
+
+void RunReports::forEach(std::string_view key,
+                         const std::function<void(const Cell&, double)>& each) const {
+  struct OneKey final : Report {
+    void set(std::string_view reported, double value) override {
+      if (reported == key) found = value;
+    }
+    std::string_view key;
+    std::optional<double> found;
+  } one;
+  one.key = key;
+  for (const uint32_t slot : byCell_) {
+    one.found.reset();
+    programs_->report(slot, one);
+    if (one.found) each(world_.modules()[slot].cell, *one.found);
+  }
+}
+std::vector<std::pair<Cell, double>> RunReports::values(std::string_view key) const {
+  std::vector<std::pair<Cell, double>> out;
+  forEach(key, [&](const Cell& cell, double value) { out.push_back({cell, value}); });
+  return out;
 }
 
 }  // namespace datomsim::experiment

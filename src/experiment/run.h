@@ -6,7 +6,9 @@
 // and follows it to the goal.
 #pragma once
 
+#include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -62,6 +64,28 @@ struct RunRequest {
   std::optional<Time> until;
 };
 
+// What the modules of a public-API program reported at the end of the run (Program::report),
+// read from their programs as the output is written, not copied out: a million modules' reports
+// would be 24 MB more. It keeps the run's programs and its final world for that.
+class RunReports {
+ public:
+  RunReports(std::unique_ptr<algorithms::ProgramSet> programs, world::World ended);
+
+  // The keys some module reported, in alphabetical order.
+  const std::vector<std::string>& keys() const { return keys_; }
+  // Every value reported under `key`, with the module's cell, sorted by cell (x, then y, then z).
+  void forEach(std::string_view key,
+               const std::function<void(const geometry::Cell&, double)>& each) const;
+  // The same gathered in one list, for small runs and tests.
+  std::vector<std::pair<geometry::Cell, double>> values(std::string_view key) const;
+
+ private:
+  std::unique_ptr<algorithms::ProgramSet> programs_;
+  world::World world_;
+  std::vector<std::string> keys_;
+  std::vector<uint32_t> byCell_;  // module indices sorted by cell
+};
+
 struct RunResult {
   ModuleId mobile;
   // gradient: every reachable cell and its distance, sorted by x, then y, then z.
@@ -74,7 +98,7 @@ struct RunResult {
   // build it is still a result (success false, with the reason), so that it can be inspected.
   std::optional<ReshapeOutcome> reshape;
   // Public-API programs: what the modules reported (Program::report), by key.
-  std::vector<algorithms::ReportedValues> reports;
+  std::shared_ptr<const RunReports> reports;
   // Whether events remained when the run stopped at `until`.
   bool stoppedAtLimit = false;
   // follow-gradient: whether the mobile reached the goal.

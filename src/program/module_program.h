@@ -34,6 +34,9 @@ class ModuleContext {
   virtual ~ModuleContext() = default;
 
   virtual ModuleId id() const = 0;
+  // The module's place in the run, 0 to n-1 for n modules, fixed for the run: a program object
+  // that serves several modules (ProgramProvider) keeps each one's state by it.
+  virtual uint32_t slot() const = 0;
   virtual geometry::Cell cell() const = 0;
   virtual geometry::Orientation orientation() const = 0;
   virtual Time now() const = 0;
@@ -111,5 +114,19 @@ class ModuleProgram {
 
 // Makes the program of one module. Called once per module, in increasing id order.
 using ProgramFactory = std::function<std::unique_ptr<ModuleProgram>(ModuleId)>;
+
+// The programs of a run, kept by their maker and lent to the simulator, which must not outlive
+// them. Programs kept together (one array by slot) cost no allocation and no pointer each, and
+// one object may serve every module, telling them apart by ModuleContext::slot.
+class ProgramSource {
+ public:
+  virtual ~ProgramSource() = default;
+  // Makes the program of one module, with its slot. Called once per module before the run, in
+  // increasing id order.
+  virtual void make(ModuleId id, uint32_t slot) = 0;
+  // The program of the module in a slot, or null for a module that runs none. Called for every
+  // event: it should be a lookup.
+  virtual ModuleProgram* programAt(uint32_t slot) = 0;
+};
 
 }  // namespace datomsim::program

@@ -11,7 +11,7 @@ namespace datomsim::scene {
 using geometry::Cell;
 
 Status addBox(world::World& world, const Cell& size, const Cell& origin, Color color,
-              geometry::Orientation orientation) {
+              geometry::Orientation orientation, bool upright) {
   if (size.x <= 0 || size.y <= 0 || size.z <= 0) {
     return Error{"box size " + geometry::toString(size) + " must be three positive integers"};
   }
@@ -38,10 +38,12 @@ Status addBox(world::World& world, const Cell& size, const Cell& origin, Color c
   module.color = color;
   module.orientation = orientation;
   for (int32_t z = 0; z < size.z; ++z) {
+    const int32_t back =
+        upright ? geometry::floorHalf(origin.z + z) - geometry::floorHalf(origin.z) : 0;
     for (int32_t y = 0; y < size.y; ++y) {
       for (int32_t x = 0; x < size.x; ++x) {
         module.id = ModuleId{id++};
-        module.cell = Cell{origin.x + x, origin.y + y, origin.z + z};
+        module.cell = Cell{origin.x + x - back, origin.y + y - back, origin.z + z};
         if (Status added = world.add(module); !added) return added;
       }
     }
@@ -51,7 +53,8 @@ Status addBox(world::World& world, const Cell& size, const Cell& origin, Color c
 
 Result<world::World> box(const Cell& size, const BoxOptions& options) {
   world::World world(world::Bounds{options.gridSize});
-  if (Status added = addBox(world, size, options.origin, options.color, options.orientation);
+  if (Status added =
+          addBox(world, size, options.origin, options.color, options.orientation, options.upright);
       !added) {
     return Error{added.error()};
   }

@@ -48,6 +48,7 @@ class Simulator::Context final : public program::ModuleContext {
   Context(Simulator& simulator, uint32_t index) : simulator_(simulator), index_(index) {}
 
   ModuleId id() const override { return module().id; }
+  uint32_t slot() const override { return index_; }
   Cell cell() const override { return module().cell; }
   Orientation orientation() const override { return module().orientation; }
   Time now() const override { return simulator_.agenda_.now(); }
@@ -81,7 +82,7 @@ class Simulator::Context final : public program::ModuleContext {
   void setTimer(Time delay, int tag) override {
     simulator_.agenda_.schedule(now() + std::max<Time>(0, delay), EventKind::kTimer, index_, tag);
   }
-  Random& random() override { return simulator_.randoms_[index_]; }
+  Random& random() override { return simulator_.randomOf(index_); }
   void setColor(Color color) override {
     const Status painted = simulator_.world_.setColor(id(), color);
     if (painted.ok()) simulator_.announce_(&Observer::colorChanged, now(), id(), color);
@@ -123,45 +124,81 @@ Simulator::Simulator(world::World world, const motion::RuleTable& table, Simulat
                {options.quarterTurnTime, options.deformationTime},
                {options.maxMotions, options.connectivity}),
       transport_(world_, motions_, agenda_, announce_,
-                 {options.messageDelay, options.messageJitter}, options.seed),
-      programs_(world_.size()) {
+                 {options.messageDelay, options.messageJitter}, options.seed) {
   announce_.subscribe(&statistics_);
   announce_.subscribe(&latchChanges_);
-  // Stream 0 is the message delays (Transport); module streams are numbered by id, from 1.
-  randoms_.reserve(world_.size());
-  for (const Module& module : world_.modules()) {
-    randoms_.push_back(Random::stream(options.seed, module.id.value));
+}
+
+Random& Simulator::randomOf(uint32_t index) {
+  if (randoms_.empty()) {
+    // Stream 0 is the message delays (Transport); module streams are numbered by id, from 1. A
+    // stream depends only on the seed and the id, so making them late changes no draw.
+    randoms_.reserve(world_.size());
+    for (const Module& module : world_.modules()) {
+      randoms_.push_back(Random::stream(options_.seed, module.id.value));
+    }
   }
+  return randoms_[index];
 }
 
 Simulator::~Simulator() = default;
 
 size_t Simulator::bytesPerModuleState() {
-  return sizeof(std::unique_ptr<program::ModuleProgram>) + sizeof(Random) +
-         sizeof(Mechanics::Pistons) + sizeof(int16_t);
+  // A program pointer (none when one program serves all), the pistons, the motion slot; the
+  // random streams only once a program draws.
+  return sizeof(program::ModuleProgram*) + sizeof(Mechanics::Pistons) + sizeof(int16_t);
 }
 
 uint32_t Simulator::indexOf(ModuleId id) const {
   return *world_.indexOf(id);
 }
 
+namespace {
+
+// Module indices in increasing id order, whatever the order of the scene file. Generated and
+// converted scenes list modules by id already: then no sort.
+std::vector<uint32_t> indicesById(const world::World& world) {
+  const std::span<const Module> modules = world.modules();
+  std::vector<uint32_t> indices(modules.size());
+  for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
+  const auto byId = [&](uint32_t a, uint32_t b) { return modules[a].id < modules[b].id; };
+  if (!std::is_sorted(indices.begin(), indices.end(), byId)) {
+    std::sort(indices.begin(), indices.end(), byId);
+  }
+  return indices;
+}
+
+}  // namespace
+
+namespace {
+
+// The programs a factory makes, owned by the simulator.
+class OwnedPrograms final : public program::ProgramSource {
+ public:
+  OwnedPrograms(program::ProgramFactory factory, size_t moduleCount)
+      : factory_(std::move(factory)), programs_(moduleCount) {}
+  void make(ModuleId id, uint32_t slot) override { programs_[slot] = factory_(id); }
+  program::ModuleProgram* programAt(uint32_t slot) override { return programs_[slot].get(); }
+
+ private:
+  program::ProgramFactory factory_;
+  std::vector<std::unique_ptr<program::ModuleProgram>> programs_;
+};
+
+}  // namespace
+
 void Simulator::install(const program::ProgramFactory& factory) {
-  // Increasing id order, whatever the order of the scene file.
-  std::vector<std::pair<ModuleId, uint32_t>> byId;
-  for (uint32_t i = 0; i < programs_.size(); ++i) byId.push_back({world_.modules()[i].id, i});
-  std::sort(byId.begin(), byId.end());
-  for (const auto& [id, index] : byId) programs_[index] = factory(id);
+  owned_ = std::make_unique<OwnedPrograms>(factory, world_.size());
+  install(*owned_);
+}
+
+void Simulator::install(program::ProgramSource& source) {
+  programs_ = &source;
+  for (const uint32_t index : indicesById(world_)) source.make(world_.modules()[index].id, index);
 }
 
 void Simulator::startAll() {
-  std::vector<std::pair<ModuleId, uint32_t>> byId;
-  byId.reserve(world_.size());
-  for (uint32_t i = 0; i < world_.size(); ++i) byId.push_back({world_.modules()[i].id, i});
-  std::sort(byId.begin(), byId.end());
-  std::vector<uint32_t> indices;
-  indices.reserve(byId.size());
-  for (const auto& [id, index] : byId) indices.push_back(index);
-  agenda_.scheduleStarts(agenda_.now(), std::move(indices));
+  agenda_.scheduleStarts(agenda_.now(), indicesById(world_));
 }
 
 void Simulator::start(ModuleId module) {
@@ -204,7 +241,7 @@ Status Simulator::run(Time until) {
 void Simulator::dispatch(const Event& event) {
   const uint32_t index = event.module;
   Context context(*this, index);
-  program::ModuleProgram* program = programs_[index].get();
+  program::ModuleProgram* program = programOf(index);
   switch (event.kind) {
     case EventKind::kStart:
       if (program) program->onStart(context);
@@ -235,11 +272,11 @@ void Simulator::dispatch(const Event& event) {
       if (!arrival.ok()) return fail(arrival.error());
       placed_.push_back(arrival->mobile);
       Context mobile(*this, arrival->mobile);
-      if (programs_[arrival->mobile]) programs_[arrival->mobile]->onMotionDone(mobile);
+      if (auto* moved = programOf(arrival->mobile)) moved->onMotionDone(mobile);
       // Queued requests whose turn came and that were refused: their programs hear of it.
       for (const auto& [waiting, refusal] : arrival->refused) {
         Context refused(*this, waiting);
-        if (programs_[waiting]) programs_[waiting]->onMotionRefused(refused, refusal);
+        if (auto* queued = programOf(waiting)) queued->onMotionRefused(refused, refusal);
       }
       break;
     }
@@ -254,9 +291,10 @@ void Simulator::tellLatchChanges() {
     for (const auto& [module, connector] :
          {std::pair{pair.a, pair.connectorA}, std::pair{pair.b, pair.connectorB}}) {
       const uint32_t index = indexOf(module);
-      if (!programs_[index]) continue;
+      program::ModuleProgram* program = programOf(index);
+      if (!program) continue;
       Context context(*this, index);
-      programs_[index]->onLatchChanged(context, connector, latched);
+      program->onLatchChanged(context, connector, latched);
     }
   }
   latchChanges_.changes.clear();

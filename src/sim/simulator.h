@@ -74,6 +74,9 @@ class Simulator {
 
   // Gives every module a program from the factory, in increasing id order.
   void install(const program::ProgramFactory& factory);
+  // Has the source make every module's program, in increasing id order, and runs them; the
+  // source keeps them and must outlive the simulator.
+  void install(program::ProgramSource& source);
   // Schedules onStart for every module now (increasing id order), or for one module.
   void startAll();
   void start(ModuleId module);
@@ -90,6 +93,8 @@ class Simulator {
   [[nodiscard]] Status run(Time until = INT64_MAX);
 
   const world::World& world() const { return world_; }
+  // The world as the run left it, moved out of a simulator that is done with.
+  world::World ended() && { return std::move(world_); }
   const Statistics& statistics() const { return statistics_.statistics(); }
   Time now() const { return agenda_.now(); }
   // Whether events remain (a run stopped at its `until`).
@@ -113,6 +118,12 @@ class Simulator {
   // Stops the run with a violation naming the current event.
   void fail(std::string what);
   uint32_t indexOf(ModuleId id) const;
+  program::ModuleProgram* programOf(uint32_t index) const {
+    return programs_ ? programs_->programAt(index) : nullptr;
+  }
+  // A module's random stream; the streams are made on the first draw of any module, so that a
+  // run whose programs draw nothing keeps none.
+  Random& randomOf(uint32_t index);
 
   world::World world_;
   const motion::RuleTable& table_;
@@ -130,8 +141,10 @@ class Simulator {
   Mechanics mechanics_;
   MotionExecutor motions_;
   Transport transport_;
-  // By world module index (modules are never removed during a run).
-  std::vector<std::unique_ptr<program::ModuleProgram>> programs_;
+  // The programs, by world module index (modules are never removed during a run); those made by
+  // a factory are owned here.
+  program::ProgramSource* programs_ = nullptr;
+  std::unique_ptr<program::ProgramSource> owned_;
   std::vector<Random> randoms_;
   std::optional<Violation> violation_;
   const Event* current_ = nullptr;

@@ -1,4 +1,4 @@
-#include "api/program_adapter.h"
+#include "api/program_host.h"
 
 #include <fmt/format.h>
 
@@ -118,41 +118,53 @@ MoveResult ContextAdapter::move(const Motion& wanted) {
 
 }  // namespace
 
-void ProgramAdapter::onStart(program::ModuleContext& context) {
-  ContextAdapter adapted(context, parameters_);
-  program_->onStart(adapted);
+ProgramHost::ProgramHost(const ProgramEntry& entry, Parameters parameters, size_t moduleCount)
+    : entry_(entry), parameters_(std::move(parameters)), programs_(moduleCount) {}
+
+void ProgramHost::make(ModuleId id, uint32_t slot) {
+  std::unique_ptr<Program> made = entry_.make(id, parameters_);
+  if (!made) {
+    throw std::logic_error(
+        fmt::format("program {} made no program for module {}", entry_.name, id.value));
+  }
+  if (slot >= programs_.size()) programs_.resize(slot + 1);
+  programs_[slot] = std::move(made);
 }
 
-void ProgramAdapter::onMessage(program::ModuleContext& context, int ownConnector,
-                               const Message& message) {
+void ProgramHost::onStart(program::ModuleContext& context) {
   ContextAdapter adapted(context, parameters_);
-  program_->onMessage(adapted, ownConnector, message);
+  programOf(context).onStart(adapted);
 }
 
-void ProgramAdapter::onDeformationDone(program::ModuleContext& context) {
+void ProgramHost::onMessage(program::ModuleContext& context, int ownConnector,
+                            const Message& message) {
   ContextAdapter adapted(context, parameters_);
-  program_->onDeformationDone(adapted);
+  programOf(context).onMessage(adapted, ownConnector, message);
 }
 
-void ProgramAdapter::onMotionDone(program::ModuleContext& context) {
+void ProgramHost::onDeformationDone(program::ModuleContext& context) {
   ContextAdapter adapted(context, parameters_);
-  program_->onMotionEnded(adapted, {true, context.cell(), std::nullopt});
+  programOf(context).onDeformationDone(adapted);
 }
 
-void ProgramAdapter::onMotionRefused(program::ModuleContext& context, const MoveRefusal& refusal) {
+void ProgramHost::onMotionDone(program::ModuleContext& context) {
   ContextAdapter adapted(context, parameters_);
-  program_->onMotionEnded(adapted, {false, context.cell(), refusal});
+  programOf(context).onMotionEnded(adapted, {true, context.cell(), std::nullopt});
 }
 
-void ProgramAdapter::onTimer(program::ModuleContext& context, int tag) {
+void ProgramHost::onMotionRefused(program::ModuleContext& context, const MoveRefusal& refusal) {
   ContextAdapter adapted(context, parameters_);
-  program_->onTimer(adapted, tag);
+  programOf(context).onMotionEnded(adapted, {false, context.cell(), refusal});
 }
 
-void ProgramAdapter::onLatchChanged(program::ModuleContext& context, int ownConnector,
-                                    bool latched) {
+void ProgramHost::onTimer(program::ModuleContext& context, int tag) {
   ContextAdapter adapted(context, parameters_);
-  program_->onNeighbourChanged(adapted, ownConnector, latched);
+  programOf(context).onTimer(adapted, tag);
+}
+
+void ProgramHost::onLatchChanged(program::ModuleContext& context, int ownConnector, bool latched) {
+  ContextAdapter adapted(context, parameters_);
+  programOf(context).onNeighbourChanged(adapted, ownConnector, latched);
 }
 
 }  // namespace datomsim::api

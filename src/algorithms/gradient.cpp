@@ -132,9 +132,15 @@ void GradientProgram::learn(program::ModuleContext& context, int direction, int3
       untold_ |= uint16_t(1u << d);
     }
 
-    // As the pivot, every motion from that cell leads to a neighbour at value + 1.
+    // As the pivot, every motion from that cell leads to a neighbour at value + 1: only the
+    // rules towards neighbours that would gain are judged.
+    uint16_t gaining = 0;
+    for (int k = 0; k < geometry::kDirectionCount; ++k) {
+      if (value + 1 < distanceTowards(k) && value + 1 < pending[k]) gaining |= uint16_t(1u << k);
+    }
+    if (!gaining) continue;
     std::array<Cell, 6> goals;
-    const int count = context.goalsAsPivot(cell, goals);
+    const int count = context.goalsAsPivot(cell, goals, gaining);
     for (int i = 0; i < count; ++i) {
       const auto goal = geometry::directionOfOffset(goals[i] - context.cell());
       if (goal && value + 1 < distanceTowards(*goal) && value + 1 < pending[*goal]) {

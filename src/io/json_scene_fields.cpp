@@ -142,12 +142,14 @@ void SceneHandler::place(const PendingModule& pending) {
   if (placementError_) return;
   world::World& world = scene_.world;
   const world::Module& module = pending.module;
-  // Check what World::add would refuse, to name the other module. Messages are only built on
-  // failure: this runs millions of times.
-  if (!world.isInside(module.cell) || world.moduleAt(module.cell) || world.find(module.id)) {
-    placementError_ = placementError(pending, index);
-  } else if (Status added = world.add(module); !added) {
-    placementError_ = failure(fmt::format("modules[{}]", index), added.error()).message;
+  // What World::add refuses is worded again here to name the other module by its place in the
+  // file. Messages are only built on failure: this runs millions of times.
+  if (Status added = world.add(module); !added) {
+    if (!world.isInside(module.cell) || world.moduleAt(module.cell) || world.find(module.id)) {
+      placementError_ = placementError(pending, index);
+    } else {
+      placementError_ = failure(fmt::format("modules[{}]", index), added.error()).message;
+    }
   }
 }
 

@@ -117,6 +117,8 @@ RuleTable::RuleTable() {
                                    axisOf(term.secondR, term.secondF, right, front)};
         }
         rule.goalOffset = rule.cells[0].offset;
+        // The goal is a neighbour of the pivot (a quarter turn about it ends next to it).
+        rule.goalDirection = *geometry::directionOfOffset(rule.goalOffset);
       }
     }
   }

@@ -49,6 +49,7 @@ struct Rule {
   Turn turn;
   geometry::Cell mobileOffset;  // U - F, from the pivot
   geometry::Cell goalOffset;    // U - R, U + R or U + F, from the pivot
+  int goalDirection;            // the world direction of goalOffset
   // The cells to check, goal first and K second so that most failures are found early.
   std::array<RuleCell, 8> cells;
   int cellCount;

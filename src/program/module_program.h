@@ -69,9 +69,12 @@ class ModuleContext {
   virtual std::vector<motion::Evaluation> motions() const = 0;
   // The goals of the rules that hold with this module as the pivot and the mobile imagined in a
   // neighbouring cell, judged from this module's neighbourhood (the distributed gradient's view),
-  // without building the motions. Writes up to 6 cells and returns how many.
-  virtual int goalsAsPivot(const geometry::Cell& mobileCell,
-                           std::array<geometry::Cell, 6>& goals) const = 0;
+  // without building the motions. Only rules whose goal lies in a `wanted` direction are judged
+  // (bit d: the neighbouring cell in world direction d): a program that needs only some goals
+  // spares the others' judging. Writes up to 6 cells and returns how many.
+  virtual int goalsAsPivot(const geometry::Cell& mobileCell, std::array<geometry::Cell, 6>& goals,
+                           uint16_t wanted = kAllDirections) const = 0;
+  static constexpr uint16_t kAllDirections = 0xFFF;
 
   // Asks for a motion. The simulator judges it at once: the rule must still hold, every module of
   // its deformation list must have compressed its piston, and nothing it needs may be reserved by

@@ -75,7 +75,8 @@ class Simulator::Context final : public program::ModuleContext {
     return motion::evaluateAll(simulator_.world_, simulator_.table_, {module().cell, module().id},
                                simulator_.options_.rules);
   }
-  int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals) const override;
+  int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,
+                   uint16_t wanted) const override;
   MoveResult move(const motion::Motion& motion) override {
     return simulator_.motions_.request(index_, motion);
   }
@@ -98,7 +99,8 @@ class Simulator::Context final : public program::ModuleContext {
 };
 
 // The rules this module would judge as the pivot of a mobile imagined at `mobileCell`.
-int Simulator::Context::goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals) const {
+int Simulator::Context::goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,
+                                     uint16_t wanted) const {
   const world::World& world = simulator_.world_;
   const Module& pivot = module();
   const auto direction = geometry::directionOfOffset(mobileCell - pivot.cell);
@@ -108,6 +110,7 @@ int Simulator::Context::goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>
   int count = 0;
   const motion::Rule* rules = simulator_.table_.rulesForMobileDirection(*direction);
   for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
+    if (!(wanted & (1u << rules[i].goalDirection))) continue;
     if (motion::holds(world, rules[i], mobile, simulator_.options_.rules)) {
       goals[count++] = pivot.cell + rules[i].goalOffset;
     }

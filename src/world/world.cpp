@@ -92,18 +92,20 @@ const Module* World::find(ModuleId id) const {
 }
 
 Status World::add(const Module& module) {
-  const std::string name = "module " + std::to_string(module.id.value);
+  // Named only on failure: loading a scene adds millions.
+  const auto name = [&] { return "module " + std::to_string(module.id.value); };
   if (module.id.value == 0) return Error{"module id 0 is reserved; ids start at 1"};
-  if (slotOf(module.id) != kNotFound) return Error{name + ": id already in use"};
+  if (slotOf(module.id) != kNotFound) return Error{name() + ": id already in use"};
 
   if (modules_.size() >= kMaxModules) {
-    return Error{name + ": the world holds its limit of 200,000,000 modules"};
+    return Error{name() + ": the world holds its limit of 200,000,000 modules"};
   }
   if (!bounds_.contains(module.cell)) {
-    return Error{name + ": cell " + toString(module.cell) + " " + bounds_.whyOutside(module.cell)};
+    return Error{name() + ": cell " + toString(module.cell) + " " +
+                 bounds_.whyOutside(module.cell)};
   }
   if (const Module* other = moduleAt(module.cell)) {
-    return Error{name + ": cell " + toString(module.cell) + " is already occupied by module " +
+    return Error{name() + ": cell " + toString(module.cell) + " is already occupied by module " +
                  std::to_string(other->id.value)};
   }
   const auto index = static_cast<uint32_t>(modules_.size());
@@ -146,10 +148,6 @@ Status World::move(ModuleId id, const Cell& to) {
   modules_[index].cell = to;
   occupancy_.insert(to, static_cast<uint32_t>(index));
   return Ok{};
-}
-
-const Module* World::neighbour(const Module& module, int direction) const {
-  return moduleAt(module.cell + geometry::neighbourOffset(direction));
 }
 
 void World::latchAllNeighbours() {

@@ -14,6 +14,7 @@
 
 #include "datomsim/result.h"
 #include "geometry/cell.h"
+#include "geometry/lattice.h"
 #include "world/bounds.h"
 #include "world/cell_index.h"
 #include "world/module.h"
@@ -66,7 +67,9 @@ class World {
   }
 
   // The neighbour of a module in world direction d (0..11), or nullptr.
-  const Module* neighbour(const Module& module, int direction) const;
+  const Module* neighbour(const Module& module, int direction) const {
+    return moduleAt(module.cell + geometry::neighbourOffset(direction));
+  }
 
   // Latches every pair of facing connectors between neighbouring modules: the rest state of a
   // scene as VisibleSim and our files describe it.

@@ -1,6 +1,9 @@
 #include "world/occupancy.h"
 
 #include <algorithm>
+#include <array>
+
+#include "geometry/lattice.h"
 
 namespace datomsim::world {
 namespace {
@@ -11,6 +14,50 @@ constexpr int64_t kMaxSlotsPerCell = 16;
 constexpr int64_t kAlwaysDenseSlots = int64_t{1} << 22;
 
 }  // namespace
+
+namespace {
+
+// The grid offset of each neighbour direction, for a cell on an even and an odd layer: the skew
+// shift floor(z/2) steps up on the way from an odd layer to the one above it, and down on the way
+// from an even layer to the one below.
+struct GridOffsets {
+  std::array<std::array<int32_t, 3>, geometry::kDirectionCount> even{}, odd{};
+};
+constexpr GridOffsets kGridOffsets = [] {
+  GridOffsets offsets;
+  for (int d = 0; d < geometry::kDirectionCount; ++d) {
+    const geometry::Cell o = geometry::neighbourOffset(d);
+    for (const int z : {0, 1}) {
+      const int32_t shift = geometry::floorHalf(z + o.z) - geometry::floorHalf(z);
+      (z == 0 ? offsets.even : offsets.odd)[size_t(d)] = {o.x + shift, o.y + shift, o.z};
+    }
+  }
+  return offsets;
+}();
+
+}  // namespace
+
+uint16_t Occupancy::neighbourMask(const geometry::Cell& cell) const {
+  uint16_t mask = 0;
+  if (sparse_) {
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      if (find(cell + geometry::neighbourOffset(d)) != kEmpty) mask |= uint16_t(1u << d);
+    }
+    return mask;
+  }
+  const int32_t shift = geometry::floorHalf(cell.z);
+  const int64_t gx = int64_t{cell.x} + shift - box_.x0;
+  const int64_t gy = int64_t{cell.y} + shift - box_.y0;
+  const int64_t gz = int64_t{cell.z} - box_.z0;
+  const auto& offsets = (cell.z & 1) ? kGridOffsets.odd : kGridOffsets.even;
+  for (int d = 0; d < geometry::kDirectionCount; ++d) {
+    const int64_t x = gx + offsets[size_t(d)][0], y = gy + offsets[size_t(d)][1],
+                  z = gz + offsets[size_t(d)][2];
+    if (x < 0 || y < 0 || z < 0 || x >= box_.nx || y >= box_.ny || z >= box_.nz) continue;
+    if (dense_[size_t((z * box_.ny + y) * box_.nx + x)] != kEmpty) mask |= uint16_t(1u << d);
+  }
+  return mask;
+}
 
 void Occupancy::insert(const geometry::Cell& cell, uint32_t value) {
   if (!sparse_ && denseSlot(cell) < 0) growToInclude(cell);

@@ -30,6 +30,10 @@ class Occupancy {
     return found ? *found : kEmpty;
   }
 
+  // Bit d set: a value is stored at the neighbour of `cell` in world direction d. One grid
+  // computation for all twelve, where twelve find() calls would make twelve.
+  uint16_t neighbourMask(const geometry::Cell& cell) const;
+
   // Stores a value (not kEmpty) at a cell, replacing any.
   void insert(const geometry::Cell& cell, uint32_t value);
   void erase(const geometry::Cell& cell);

@@ -152,11 +152,12 @@ Status World::move(ModuleId id, const Cell& to) {
 
 void World::latchAllNeighbours() {
   for (Module& module : modules_) {
-    module.latches = 0;
+    uint16_t latches = 0;
+    const uint16_t present = occupancy_.neighbourMask(module.cell);
     for (int d = 0; d < geometry::kDirectionCount; ++d) {
-      if (neighbour(module, d))
-        module.latches |= uint16_t(1u << module.orientation.ownConnector(d));
+      if (present & (1u << d)) latches |= uint16_t(1u << module.orientation.ownConnector(d));
     }
+    module.latches = latches;
   }
 }
 

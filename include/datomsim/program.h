@@ -90,9 +90,12 @@ class DATOMSIM_API Context {
   virtual Status send(int connector, const Message& message) = 0;
   // Sends to every latched connector but `except` (-1: none); returns how many were sent.
   int sendToAll(const Message& message, int except = -1) {
+    const uint16_t latches = latchedConnectors();
     int sent = 0;
     for (int connector = 0; connector < 12; ++connector) {
-      if (connector != except && latched(connector) && send(connector, message).ok()) ++sent;
+      if (connector != except && ((latches >> connector) & 1) && send(connector, message).ok()) {
+        ++sent;
+      }
     }
     return sent;
   }

@@ -75,9 +75,10 @@ void GradientProgram::spread(program::ModuleContext& context, const Cell& cell, 
   const Cell self = context.cell();
   const uint16_t latched = context.latchedConnectors();
   const geometry::Orientation orientation = context.orientation();
+  const uint16_t occupied = context.occupiedAround(cell).value_or(0);
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     const Cell around = cell + geometry::neighbourOffset(d);
-    if (around == self || !context.occupied(around).value_or(false)) continue;
+    if (around == self || !(occupied & (1u << d))) continue;
     // A module around the cell that is this module's neighbour, latched: straight there.
     if (const auto direction = geometry::directionOfOffset(around - self)) {
       const int connector = orientation.ownConnector(*direction);

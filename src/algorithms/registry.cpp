@@ -58,9 +58,11 @@ class TypedPrograms final : public ProgramSet {
           if (programs_[slot].distanceTowards(d) == GradientProgram::kUnknown) continue;
           const geometry::Cell cell = self + geometry::neighbourOffset(d);
           const int towardsSelf = geometry::oppositeDirection(d);
+          const uint16_t around = modules.neighboursOf(cell);
           int smallest = GradientProgram::kUnknown;
           bool first = true;
           for (int e = 0; e < geometry::kDirectionCount; ++e) {
+            if (!(around & (1u << e))) continue;
             const int stored = storedFor(cell, e);
             if (stored == GradientProgram::kUnknown) continue;
             if (smallest == GradientProgram::kUnknown && e != towardsSelf) {

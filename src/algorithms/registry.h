@@ -77,6 +77,8 @@ struct ModulesAtEnd {
   std::function<geometry::Cell(uint32_t slot)> cellOf;
   // The slot of the module in a cell, if one is there.
   std::function<std::optional<uint32_t>(const geometry::Cell&)> slotAt;
+  // Bit d set: a module is in the neighbour of a cell in world direction d.
+  std::function<uint16_t(const geometry::Cell&)> neighboursOf;
 };
 
 // A module of the reconfigure program that has not settled, and what it was doing.

@@ -78,6 +78,7 @@ algorithms::ModulesAtEnd modulesAtEnd(const world::World& world) {
     if (!module) return std::nullopt;
     return uint32_t(module - world.modules().data());
   };
+  modules.neighboursOf = [&world](const Cell& cell) { return world.neighbourMask(cell); };
   return modules;
 }
 
@@ -280,11 +281,6 @@ RunReports::RunReports(std::unique_ptr<algorithms::ProgramSet> programs, world::
   for (uint32_t slot = 0; slot < world_.size(); ++slot) programs_->report(slot, keys);
   keys_ = std::move(keys.names);
   std::sort(keys_.begin(), keys_.end());
-  const std::span<const world::Module> modules = world_.modules();
-  byCell_.resize(modules.size());
-  for (uint32_t i = 0; i < byCell_.size(); ++i) byCell_[i] = i;
-  std::sort(byCell_.begin(), byCell_.end(),
-            [&](uint32_t a, uint32_t b) { return modules[a].cell < modules[b].cell; });
 }
 
 void RunReports::forEach(std::string_view key,
@@ -297,11 +293,11 @@ void RunReports::forEach(std::string_view key,
     std::optional<double> found;
   } one;
   one.key = key;
-  for (const uint32_t slot : byCell_) {
+  world_.forEachInCellOrder([&](uint32_t slot) {
     one.found.reset();
     programs_->report(slot, one);
     if (one.found) each(world_.modules()[slot].cell, *one.found);
-  }
+  });
 }
 std::vector<std::pair<Cell, double>> RunReports::values(std::string_view key) const {
   std::vector<std::pair<Cell, double>> out;

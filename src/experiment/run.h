@@ -83,7 +83,6 @@ class RunReports {
   std::unique_ptr<algorithms::ProgramSet> programs_;
   world::World world_;
   std::vector<std::string> keys_;
-  std::vector<uint32_t> byCell_;  // module indices sorted by cell
 };
 
 struct RunResult {

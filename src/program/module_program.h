@@ -44,6 +44,10 @@ class ModuleContext {
   // Whether a cell holds a module, for cells within two lattice steps (the range a module senses,
   // as it must to judge a motion rule); nullopt further away.
   virtual std::optional<bool> occupied(const geometry::Cell& cell) const = 0;
+  // The same for the twelve neighbours of a cell next to this module (all within two steps):
+  // bit d set when the neighbour in world direction d holds a module. Nullopt for a cell that is
+  // not next to this module.
+  virtual std::optional<uint16_t> occupiedAround(const geometry::Cell& cell) const = 0;
 
   // Bit i set: the module's own connector i is latched to a neighbour.
   virtual uint16_t latchedConnectors() const = 0;

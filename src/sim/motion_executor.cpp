@@ -51,7 +51,8 @@ bool MotionExecutor::isQueued(uint32_t index) const {
 
 std::optional<MotionExecutor::HingeEnd> MotionExecutor::hingePartner(uint32_t index,
                                                                      int ownConnector) const {
-  if (motionOf_[index] < 0) return std::nullopt;
+  // Asked for every message: with no motion in flight, the answer needs no look at the module.
+  if (activeCount_ == 0 || motionOf_[index] < 0) return std::nullopt;
   const ActiveMotion& active = motions_[motionOf_[index]];
   if (active.mobile == index && ownConnector == active.mobileConnector()) {
     return HingeEnd{active.pivot, active.pivotConnector()};

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "datomsim/message.h"
@@ -116,15 +117,27 @@ class Observer {
 class Announcer {
  public:
   void subscribe(Observer* observer) { observers_.push_back(observer); }
+  // A subscriber that hears only latchChanged: it costs nothing to the announcements of every
+  // event and message (the simulator's own, which tells programs of their latches).
+  void subscribeToLatches(Observer* observer) { latchWatchers_.push_back(observer); }
 
   // Calls one method of every subscriber, in the order they subscribed.
   template <typename... Parameters, typename... Arguments>
   void operator()(void (Observer::*method)(Parameters...), Arguments&&... arguments) const {
     for (Observer* observer : observers_) (observer->*method)(arguments...);
+    // Only latchChanged has this signature: the others' announcements skip the watchers at no
+    // cost, decided when compiled.
+    if constexpr (std::is_same_v<void (Observer::*)(Parameters...), LatchMethod>) {
+      if (method == &Observer::latchChanged) {
+        for (Observer* observer : latchWatchers_) (observer->*method)(arguments...);
+      }
+    }
   }
 
  private:
+  using LatchMethod = void (Observer::*)(Time, const world::LatchPair&, bool);
   std::vector<Observer*> observers_;
+  std::vector<Observer*> latchWatchers_;
 };
 
 }  // namespace datomsim::sim

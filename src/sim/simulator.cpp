@@ -60,6 +60,10 @@ class Simulator::Context final : public program::ModuleContext {
     if (x * x + y * y + 2 * z * z > 16) return std::nullopt;
     return simulator_.world_.moduleAt(cell) != nullptr;
   }
+  std::optional<uint16_t> occupiedAround(const Cell& cell) const override {
+    if (!geometry::directionOfOffset(cell - module().cell)) return std::nullopt;
+    return simulator_.world_.neighbourMask(cell);
+  }
   uint16_t latchedConnectors() const override { return module().latches; }
   Cell cellBehind(int ownConnector) const override {
     return module().cell +
@@ -85,8 +89,8 @@ class Simulator::Context final : public program::ModuleContext {
   }
   Random& random() override { return simulator_.randomOf(index_); }
   void setColor(Color color) override {
-    const Status painted = simulator_.world_.setColor(id(), color);
-    if (painted.ok()) simulator_.announce_(&Observer::colorChanged, now(), id(), color);
+    simulator_.world_.setColorAt(index_, color);
+    simulator_.announce_(&Observer::colorChanged, now(), id(), color);
   }
   void log(std::string_view text) override {
     simulator_.announce_(&Observer::programLog, now(), id(), text);
@@ -129,7 +133,7 @@ Simulator::Simulator(world::World world, const motion::RuleTable& table, Simulat
       transport_(world_, motions_, agenda_, announce_,
                  {options.messageDelay, options.messageJitter}, options.seed) {
   announce_.subscribe(&statistics_);
-  announce_.subscribe(&latchChanges_);
+  announce_.subscribeToLatches(&latchChanges_);
 }
 
 Random& Simulator::randomOf(uint32_t index) {
@@ -219,7 +223,7 @@ void Simulator::subscribe(Observer* observer) {
 Status Simulator::run(Time until) {
   const auto wallStart = std::chrono::steady_clock::now();
   // The run loop: take the earliest event, let it act, check the invariants.
-  while (!violation_ && !agenda_.empty() && agenda_.top().time <= until) {
+  while (!violation_ && !agenda_.empty() && agenda_.nextTime() <= until) {
     const Event event = agenda_.pop();
     current_ = &event;
     mechanics_.clearEvent();

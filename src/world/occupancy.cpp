@@ -50,11 +50,23 @@ uint16_t Occupancy::neighbourMask(const geometry::Cell& cell) const {
   const int64_t gy = int64_t{cell.y} + shift - box_.y0;
   const int64_t gz = int64_t{cell.z} - box_.z0;
   const auto& offsets = (cell.z & 1) ? kGridOffsets.odd : kGridOffsets.even;
+  const int64_t layer = int64_t{box_.nx} * box_.ny;
+  // Inside the box with a slot to spare on every side: no neighbour needs a bounds check.
+  if (gx >= 1 && gy >= 1 && gz >= 1 && gx + 1 < box_.nx && gy + 1 < box_.ny && gz + 1 < box_.nz) {
+    const uint32_t* at = dense_.data() + (gz * layer + gy * box_.nx + gx);
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      const auto& o = offsets[size_t(d)];
+      if (at[o[2] * layer + o[1] * box_.nx + o[0]] != kEmpty) mask |= uint16_t(1u << d);
+    }
+    return mask;
+  }
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
-    const int64_t x = gx + offsets[size_t(d)][0], y = gy + offsets[size_t(d)][1],
-                  z = gz + offsets[size_t(d)][2];
-    if (x < 0 || y < 0 || z < 0 || x >= box_.nx || y >= box_.ny || z >= box_.nz) continue;
-    if (dense_[size_t((z * box_.ny + y) * box_.nx + x)] != kEmpty) mask |= uint16_t(1u << d);
+    const auto& o = offsets[size_t(d)];
+    const int64_t z = gz + o[2];
+    if (uint64_t(z) >= uint64_t(box_.nz)) continue;
+    const int64_t x = gx + o[0], y = gy + o[1];
+    if (uint64_t(x) >= uint64_t(box_.nx) || uint64_t(y) >= uint64_t(box_.ny)) continue;
+    if (dense_[size_t(z * layer + y * box_.nx + x)] != kEmpty) mask |= uint16_t(1u << d);
   }
   return mask;
 }

@@ -7,6 +7,7 @@
 // the cells.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <span>
 #include <string>
@@ -44,6 +45,8 @@ class World {
   // Turns or paints a module. Refuses an unknown id.
   Status setOrientation(ModuleId id, geometry::Orientation orientation);
   Status setColor(ModuleId id, Color color);
+  // The same for the module at a place in modules(), which must be one.
+  void setColorAt(uint32_t index, Color color) { modules_[index].color = color; }
 
   size_t size() const { return modules_.size(); }
   std::span<const Module> modules() const { return modules_; }
@@ -66,10 +69,19 @@ class World {
     return moduleAt(cell) ? CellState::kOccupied : CellState::kEmpty;
   }
 
+  // Bit d set: a module is in the neighbour of `cell` in world direction d.
+  uint16_t neighbourMask(const geometry::Cell& cell) const { return occupancy_.neighbourMask(cell); }
+
   // The neighbour of a module in world direction d (0..11), or nullptr.
   const Module* neighbour(const Module& module, int direction) const {
     return moduleAt(module.cell + geometry::neighbourOffset(direction));
   }
+
+  // Calls f(index) for every module, by index in modules(), in cell order (x, then y, then z).
+  // When the modules fill a good part of the box of cells they span (a scene of boxes), the box is
+  // walked and nothing is sorted or held; otherwise their indices are sorted.
+  template <typename F>
+  void forEachInCellOrder(F&& f) const;
 
   // Latches every pair of facing connectors between neighbouring modules: the rest state of a
   // scene as VisibleSim and our files describe it.
@@ -118,5 +130,35 @@ class World {
   bool sparseIds_ = false;
   uint32_t maxId_ = 0;
 };
+
+template <typename F>
+void World::forEachInCellOrder(F&& f) const {
+  if (modules_.empty()) return;
+  geometry::Cell low = modules_.front().cell, high = low;
+  for (const Module& module : modules_) {
+    low = {std::min(low.x, module.cell.x), std::min(low.y, module.cell.y),
+           std::min(low.z, module.cell.z)};
+    high = {std::max(high.x, module.cell.x), std::max(high.y, module.cell.y),
+            std::max(high.z, module.cell.z)};
+  }
+  const double volume = (double(high.x) - low.x + 1) * (double(high.y) - low.y + 1) *
+                        (double(high.z) - low.z + 1);
+  if (volume <= 4.0 * double(modules_.size())) {
+    for (int32_t x = low.x; x <= high.x; ++x) {
+      for (int32_t y = low.y; y <= high.y; ++y) {
+        for (int32_t z = low.z; z <= high.z; ++z) {
+          const uint32_t index = occupancy_.find({x, y, z});
+          if (index != Occupancy::kEmpty) f(index);
+        }
+      }
+    }
+    return;
+  }
+  std::vector<uint32_t> order(modules_.size());
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](uint32_t a, uint32_t b) { return modules_[a].cell < modules_[b].cell; });
+  for (const uint32_t index : order) f(index);
+}
 
 }  // namespace datomsim::world

@@ -69,6 +69,62 @@ target::Target boxTarget(const GenerateArguments& args) {
   return unwrap(target::Target::grid(cells));
 }
 
+// The same modules (ids, orientations, colours, order) moved by `offset` into a world of `bounds`,
+// all neighbours latched.
+world::World rebuilt(const world::World& from, const world::Bounds& bounds,
+                     const geometry::Cell& offset) {
+  world::World world(bounds);
+  world.reserve(from.size());
+  for (world::Module module : from.modules()) {
+    module.cell = module.cell + offset;
+    check(world.add(module));
+  }
+  world.latchAllNeighbours();
+  return world;
+}
+
+// The smallest and largest grid coordinates (x + floor(z/2), y + floor(z/2), z) of the modules.
+std::pair<geometry::Cell, geometry::Cell> gridExtent(const world::World& world) {
+  geometry::Cell low{INT32_MAX, INT32_MAX, INT32_MAX}, high{INT32_MIN, INT32_MIN, INT32_MIN};
+  for (const world::Module& module : world.modules()) {
+    const int32_t shift = geometry::floorHalf(module.cell.z);
+    const geometry::Cell grid{module.cell.x + shift, module.cell.y + shift, module.cell.z};
+    low = {std::min(low.x, grid.x), std::min(low.y, grid.y), std::min(low.z, grid.z)};
+    high = {std::max(high.x, grid.x), std::max(high.y, grid.y), std::max(high.z, grid.z)};
+  }
+  return {low, high};
+}
+
+// VisibleSim opens only a file that declares its grid, which starts at 0,0,0. A scene written as
+// XML without one gets the smallest grid that holds its modules with room to move: two free cells
+// beyond them on the far sides and two free layers above. Cells below the grid's origin cannot be
+// written so; the refusal names one.
+void declareGridForVisibleSim(io::Scene& scene, const std::string& out) {
+  const auto format = io::sceneFormatOf(out);
+  if (scene.world.bounds().gridSize || scene.world.size() == 0 || !format.ok() ||
+      *format != io::SceneFormat::kVisibleSimXml) {
+    return;
+  }
+  const auto [low, high] = gridExtent(scene.world);
+  if (low.x < 0 || low.y < 0) {
+    for (const world::Module& module : scene.world.modules()) {
+      const int32_t shift = geometry::floorHalf(module.cell.z);
+      if (module.cell.x + shift < 0 || module.cell.y + shift < 0) {
+        throw UsageError(fmt::format(
+            "{}: VisibleSim's grid starts at 0,0,0, and module {} at {} lies before it (x + "
+            "floor(z/2) and y + floor(z/2) must not be negative; docs/coordinates.md); write JSON, "
+            "or move the scene",
+            out, module.id.value, geometry::toString(module.cell)));
+      }
+    }
+  }
+  constexpr int32_t kRoom = 2;
+  const geometry::Cell grid{high.x + 1 + kRoom, high.y + 1 + kRoom, high.z + 1 + kRoom};
+  scene.world = rebuilt(scene.world, world::Bounds{grid}, {0, 0, 0});
+  fmt::print(stderr, "declared grid {} in {}: VisibleSim needs one\n", geometry::toString(grid),
+             out);
+}
+
 void writeGenerated(world::World world, const std::string& name, const GenerateArguments& args) {
   std::vector<NamedPath> inputs;
   for (const std::string& file : args.targetFiles) inputs.push_back({"--target", file});
@@ -82,6 +138,7 @@ void writeGenerated(world::World world, const std::string& name, const GenerateA
     for (target::Target& target : source.targets) scene.targets.push_back(std::move(target));
   }
   if (!args.targetBox.empty()) scene.targets.push_back(boxTarget(args));
+  declareGridForVisibleSim(scene, args.out);
   check(io::writeScene(scene, args.out));
   fmt::print(stderr, "wrote {} ({} modules{})\n", args.out, scene.world.size(),
              scene.targets.empty() ? ""
@@ -97,6 +154,7 @@ void addGenerate(CLI::App& app) {
 
   struct BoxArguments {
     std::string size, origin = "0,0,0", grid;
+    bool upright = false;
     GenerateArguments generate;
   };
   auto box = std::make_shared<BoxArguments>();
@@ -104,8 +162,13 @@ void addGenerate(CLI::App& app) {
   boxCommand->add_option("--size", box->size, "Size X,Y,Z in cells")->required();
   boxCommand->add_option("--origin", box->origin, "Corner cell x,y,z")->capture_default_str();
   boxCommand->add_option("--grid", box->grid, "Declare a grid X,Y,Z (default: none)");
+  boxCommand->add_flag("--upright", box->upright,
+                       "Stand straight up instead of leaning with the skew coordinates: each "
+                       "layer's x and y less floor(z/2) (docs/coordinates.md); fills a grid of "
+                       "its own size");
   boxCommand->callback([box] {
     scene::BoxOptions options;
+    options.upright = box->upright;
     options.origin = parseCell("--origin", box->origin);
     if (!box->grid.empty()) options.gridSize = parseCell("--grid", box->grid);
     const geometry::Cell size = parseCell("--size", box->size);
@@ -156,8 +219,14 @@ void addGenerate(CLI::App& app) {
     options.maxHeight = random->height;
     options.randomOrientations = random->orientations;
     const uint64_t seed = parseSeed("--seed", random->seed);
-    writeGenerated(unwrap(scene::random(seed, random->count, options)),
-                   fmt::format("random, seed {}", seed), random->generate);
+    world::World world = unwrap(scene::random(seed, random->count, options));
+    if (!options.gridSize) {
+      // Grown from 0,0,0 every way; moved so that its grid coordinates start at 0, as a grid
+      // (VisibleSim's, or one given later) counts them.
+      const auto [low, high] = gridExtent(world);
+      world = rebuilt(world, world.bounds(), {-low.x, -low.y, 0});
+    }
+    writeGenerated(std::move(world), fmt::format("random, seed {}", seed), random->generate);
   });
 }
 
@@ -172,7 +241,8 @@ void addConvert(CLI::App& app) {
   command->add_option("-o,--out", args->out, "Scene file to write (.xml or .json)")->required();
   command->callback([args] {
     refuseClashes({{"scene", args->in}}, {{"--out", args->out}});
-    const io::Scene scene = unwrap(io::readScene(args->in));
+    io::Scene scene = unwrap(io::readScene(args->in));
+    declareGridForVisibleSim(scene, args->out);
     check(io::writeScene(scene, args->out));
   });
 }
@@ -190,10 +260,11 @@ size_t countComponents(const world::World& world) {
     while (!stack.empty()) {
       const world::Module& module = world.modules()[stack.back()];
       stack.pop_back();
+      const uint16_t around = world.neighbourMask(module.cell);
       for (int d = 0; d < geometry::kDirectionCount; ++d) {
+        if (!(around & (1u << d))) continue;
         const world::Module* next = world.neighbour(module, d);
-        if (!next) continue;
-        const uint32_t index = *world.indexOf(next->id);
+        const auto index = uint32_t(next - world.modules().data());
         if (!seen[index]) {
           seen[index] = true;
           stack.push_back(index);

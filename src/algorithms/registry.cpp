@@ -63,7 +63,8 @@ class TypedPrograms final : public ProgramSet {
           bool first = true;
           for (int e = 0; e < geometry::kDirectionCount; ++e) {
             if (!(around & (1u << e))) continue;
-            const int stored = storedFor(cell, e);
+            const int stored = e == towardsSelf ? programs_[slot].distanceTowards(d)
+                                                : storedFor(cell, e);
             if (stored == GradientProgram::kUnknown) continue;
             if (smallest == GradientProgram::kUnknown && e != towardsSelf) {
               first = false;

@@ -100,6 +100,8 @@ class FastReader {
  public:
   FastReader(ByteSource& bytes, std::string_view source) : bytes_(bytes), handler_(source) {}
 
+  void expectModules(size_t count) { handler_.expectModules(count); }
+
   std::optional<Result<Scene>> read() {
     bytes_.skipWhitespace();
     if (!bytes_.accept('{') || !handler_.start_object(0)) return std::nullopt;
@@ -292,18 +294,20 @@ class FastReader {
     // or "2e3" is not taken for 1 or 2.
     bool number(int64_t& into, int64_t low, int64_t high) {
       const bool negative = at < end && *at == '-';
-      const char* digit = at + (negative ? 1 : 0);
-      int64_t value = 0;
-      int digits = 0;
-      for (; digit < end && *digit >= '0' && *digit <= '9'; ++digit) {
-        if (++digits > 18 || (digits == 2 && value == 0)) return false;
-        value = value * 10 + (*digit - '0');
+      const char* const first = at + (negative ? 1 : 0);
+      const char* digit = first;
+      // Unsigned, so that a long run of digits wraps instead of overflowing; it is refused below.
+      uint64_t value = 0;
+      while (digit < end && static_cast<unsigned char>(*digit - '0') < 10) {
+        value = value * 10 + uint64_t(*digit - '0');
+        ++digit;
       }
-      if (digits == 0 || digit == end || (*digit != ',' && *digit != ']') ||
-          (negative && value == 0)) {
+      const auto digits = digit - first;
+      if (digits == 0 || digits > 18 || (digits > 1 && *first == '0') || digit == end ||
+          (*digit != ',' && *digit != ']') || (negative && value == 0)) {
         return false;
       }
-      into = negative ? -value : value;
+      into = negative ? -int64_t(value) : int64_t(value);
       at = digit;
       return into >= low && into <= high;
     }
@@ -358,8 +362,19 @@ std::optional<Result<Scene>> readJsonSceneFast(std::string_view text, std::strin
 }
 
 std::optional<Result<Scene>> readJsonSceneFast(std::istream& input, std::string_view source) {
+  // A module as the writer puts it takes some 60 to 70 bytes: the size of what is left to read
+  // tells about how many there are.
+  constexpr std::streamoff kBytesPerModule = 64;
+  std::streamoff size = 0;
+  if (const auto start = input.tellg(); start != std::istream::pos_type(-1)) {
+    input.seekg(0, std::ios::end);
+    size = input.tellg() - start;
+    input.seekg(start);
+  }
   ByteSource bytes(input);
-  return FastReader(bytes, source).read();
+  FastReader reader(bytes, source);
+  if (size > 0) reader.expectModules(size_t(size / kBytesPerModule));
+  return reader.read();
 }
 
 }  // namespace datomsim::io::detail

@@ -132,7 +132,14 @@ void SceneHandler::startModules() {
   // With the grid known (writers put it first), modules go into the world as they are read;
   // otherwise the grid may still come, and they wait for it.
   placeAsRead_ = has(topSeen_, kTopKeys, "grid");
-  if (placeAsRead_) scene_.world = world::World(bounds_);
+  // Never more than the world may hold, whatever the guess.
+  const size_t expected = std::min(expectedModules_, world::kMaxModules);
+  if (placeAsRead_) {
+    scene_.world = world::World(bounds_);
+    scene_.world.reserve(expected);
+  } else {
+    pending_.reserve(expected);
+  }
 }
 
 void SceneHandler::place(const PendingModule& pending) {

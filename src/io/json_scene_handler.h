@@ -79,6 +79,11 @@ class SceneHandler {
   // Checks what only the whole document can tell, and builds the scene.
   Result<Scene> finish();
 
+  // How many modules the document probably holds (from its size): room is made for them when the
+  // modules array opens, so that a large scene grows no array by doubling. Only a guess: it
+  // changes no result.
+  void expectModules(size_t count) { expectedModules_ = count; }
+
  private:
   // The document's structure (json_scene_reader.cpp).
 
@@ -113,6 +118,7 @@ class SceneHandler {
   // Why the module at `index` in the list cannot be placed in the world built so far.
   std::string placementError(const PendingModule& module, size_t index);
   size_t moduleCount() const { return placeAsRead_ ? placed_ : pending_.size(); }
+  size_t expectedModules_ = 0;
   std::string modulePath() const;
   // Records the error "source: path: message" and returns false, to stop the parse.
   bool fail(std::string_view path, std::string_view message);

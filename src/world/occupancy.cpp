@@ -53,10 +53,10 @@ uint16_t Occupancy::neighbourMask(const geometry::Cell& cell) const {
   const int64_t layer = int64_t{box_.nx} * box_.ny;
   // Inside the box with a slot to spare on every side: no neighbour needs a bounds check.
   if (gx >= 1 && gy >= 1 && gz >= 1 && gx + 1 < box_.nx && gy + 1 < box_.ny && gz + 1 < box_.nz) {
-    const uint32_t* at = dense_.data() + (gz * layer + gy * box_.nx + gx);
+    const int64_t at = gz * layer + gy * box_.nx + gx;
     for (int d = 0; d < geometry::kDirectionCount; ++d) {
       const auto& o = offsets[size_t(d)];
-      if (at[o[2] * layer + o[1] * box_.nx + o[0]] != kEmpty) mask |= uint16_t(1u << d);
+      if (isSet(size_t(at + o[2] * layer + o[1] * box_.nx + o[0]))) mask |= uint16_t(1u << d);
     }
     return mask;
   }
@@ -66,7 +66,7 @@ uint16_t Occupancy::neighbourMask(const geometry::Cell& cell) const {
     if (uint64_t(z) >= uint64_t(box_.nz)) continue;
     const int64_t x = gx + o[0], y = gy + o[1];
     if (uint64_t(x) >= uint64_t(box_.nx) || uint64_t(y) >= uint64_t(box_.ny)) continue;
-    if (dense_[size_t(z * layer + y * box_.nx + x)] != kEmpty) mask |= uint16_t(1u << d);
+    if (isSet(size_t(z * layer + y * box_.nx + x))) mask |= uint16_t(1u << d);
   }
   return mask;
 }
@@ -79,9 +79,11 @@ void Occupancy::insert(const geometry::Cell& cell, uint32_t value) {
     sparseIndex_.insert(key, value);
     return;
   }
-  uint32_t& slot = dense_[static_cast<size_t>(denseSlot(cell))];
+  const auto at = static_cast<size_t>(denseSlot(cell));
+  uint32_t& slot = dense_[at];
   if (slot == kEmpty) ++count_;
   slot = value;
+  occupiedBits_[at >> 6] |= uint64_t{1} << (at & 63);
 }
 
 void Occupancy::erase(const geometry::Cell& cell) {
@@ -94,6 +96,7 @@ void Occupancy::erase(const geometry::Cell& cell) {
   const int64_t slot = denseSlot(cell);
   if (slot >= 0 && dense_[static_cast<size_t>(slot)] != kEmpty) {
     dense_[static_cast<size_t>(slot)] = kEmpty;
+    occupiedBits_[size_t(slot) >> 6] &= ~(uint64_t{1} << (size_t(slot) & 63));
     --count_;
   }
 }
@@ -127,10 +130,19 @@ void Occupancy::shrinkToFit() {
   }
   dense_ = std::move(packed);
   box_ = tight;
+  rebuildBits();
+}
+
+void Occupancy::rebuildBits() {
+  occupiedBits_.assign((dense_.size() + 63) / 64, 0);
+  for (size_t slot = 0; slot < dense_.size(); ++slot) {
+    if (dense_[slot] != kEmpty) occupiedBits_[slot >> 6] |= uint64_t{1} << (slot & 63);
+  }
 }
 
 size_t Occupancy::memoryBytes() const {
-  return dense_.capacity() * sizeof(uint32_t) + sparseIndex_.memoryBytes();
+  return dense_.capacity() * sizeof(uint32_t) + occupiedBits_.capacity() * sizeof(uint64_t) +
+         sparseIndex_.memoryBytes();
 }
 
 void Occupancy::growToInclude(const geometry::Cell& cell) {
@@ -182,6 +194,7 @@ void Occupancy::growToInclude(const geometry::Cell& cell) {
       std::copy_n(old.begin() + from, oldBox.nx, dense_.begin() + to);
     }
   }
+  rebuildBits();
 }
 
 void Occupancy::switchToSparse() {
@@ -199,6 +212,7 @@ void Occupancy::switchToSparse() {
   }
   sparse_ = true;
   dense_ = {};
+  occupiedBits_ = {};
   box_ = {};
 }
 

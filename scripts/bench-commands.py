@@ -21,7 +21,9 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # VisibleSim's flooding example on Datoms boxes (-O2, same machine kind): 10.8 M messages for a
-# million modules in 262 s, about 41 thousand messages a second and 19 KB a module.
+# million modules in 262 s, about 41 thousand messages a second and 19 KB a module. 10.8 M is what
+# flooding a 100 x 100 x 100 box sends (every module tells its other latched neighbours), the
+# case compared here; a box of two layers sends 7.0 M.
 VISIBLESIM_MESSAGES_PER_SECOND = 41_000
 
 # name -> box size (x, y, z): two layers, as the paper's scenes, except the largest.
@@ -31,6 +33,7 @@ BOXES = {
     "1M": (1000, 500, 2),
     "2M": (1000, 1000, 2),
     "100M": (10000, 10000, 1),
+    "cube1M": (100, 100, 100),
 }
 
 
@@ -49,7 +52,9 @@ class Bench:
         return os.path.join(self.work, name)
 
     def measure(self, args, repeat=None):
-        """Runs `datomsim args` and returns (seconds, peak kilobytes), medians over the runs."""
+        """Runs `datomsim args` and returns (seconds, peak kilobytes), medians over the runs; the
+        fastest run's seconds are kept in self.best: on a shared machine a run now and then takes
+        half as long again, and the best shows what the command itself costs."""
         times, peaks = [], []
         for _ in range(repeat or self.repeat):
             timing = self.path("time.txt")
@@ -61,6 +66,7 @@ class Bench:
                 seconds, kilobytes = f.read().split()[-2:]
             times.append(float(seconds))
             peaks.append(int(kilobytes))
+        self.best = min(times)
         return statistics.median(times), statistics.median(peaks)
 
     def scene(self, box, extension="json"):
@@ -77,8 +83,8 @@ class Bench:
 
     @staticmethod
     def root(box):
-        x, y, _ = BOXES[box]
-        return f"{x // 2},{y // 2},0"
+        x, y, z = BOXES[box]
+        return f"{x // 2},{y // 2},{z // 2 if z > 2 else 0}"
 
     def commands(self, box):
         """The commands of the table, as (label, arguments)."""
@@ -105,40 +111,46 @@ def megabytes(kilobytes):
 
 
 def print_goal(name, figure, goal, met):
-    print(f"  {name:<52} {figure:<30} goal {goal:<22} {'met' if met else 'NOT MET'}")
+    print(f"  {name:<58} {figure:<36} goal {goal:<22} {'met' if met else 'NOT MET'}")
 
 
 def goals(bench, large):
     print("Performance goals (whole commands, one process; median of "
-          f"{bench.repeat} runs):")
+          f"{bench.repeat} runs, the fastest in brackets; goals judged on the median):")
     out = bench.path("out.json")
     two = bench.scene("2M")
     seconds, peak = bench.measure(["reach", two, "--goal", bench.goal("2M"), "--out", out])
-    print_goal("reach, 2 M modules, from JSON", f"{seconds:.2f} s, {megabytes(peak):.0f} MB",
+    print_goal("reach, 2 M modules, from JSON",
+               f"{seconds:.2f} s ({bench.best:.2f}), {megabytes(peak):.0f} MB",
                "< 1 s, < 200 MB", seconds < 1 and megabytes(peak) < 200)
     xml = bench.scene("2M", "xml")
     seconds, peak = bench.measure(["reach", xml, "--goal", bench.goal("2M"), "--out", out])
-    print_goal("reach, 2 M modules, from VisibleSim XML", f"{seconds:.2f} s, {megabytes(peak):.0f} MB",
+    print_goal("reach, 2 M modules, from VisibleSim XML",
+               f"{seconds:.2f} s ({bench.best:.2f}), {megabytes(peak):.0f} MB",
                "< 2 s, < 400 MB", seconds < 2 and megabytes(peak) < 400)
 
     seconds, peak = bench.measure(["run", two, "--program", "gradient", "--goal", bench.goal("2M"),
                                    "--out", out])
     per_module = peak * 1024 / modules("2M")
-    print_goal("distributed gradient, 2 M modules", f"{seconds:.2f} s, {per_module:.0f} B/module",
+    print_goal("distributed gradient, 2 M modules",
+               f"{seconds:.2f} s ({bench.best:.2f}), {per_module:.0f} B/module",
                "< 2 s, < 150 B/module", seconds < 2 and per_module < 150)
 
-    one = bench.scene("1M")
-    seconds, peak = bench.measure(["run", one, "--program", "flood", "--root", bench.root("1M"),
-                                   "--out", out])
-    with open(out) as f:
-        messages = json.load(f)["messages"]
-    rate = messages / seconds
-    per_module = peak * 1024 / modules("1M")
-    print_goal("flood, 1 M modules", f"{seconds:.2f} s, {per_module:.0f} B/module",
-               "< 1 s, < 100 B/module", seconds < 1 and per_module < 100)
-    print_goal(f"  its messages ({messages / 1e6:.1f} M) per second of the command",
-               f"{rate / 1e6:.1f} M/s = {rate / VISIBLESIM_MESSAGES_PER_SECOND:.0f}x VisibleSim",
-               "> 10 M/s, >= 250x", rate > 10e6)
+    for box, label in [("cube1M", "flood, 1 M modules, 100 x 100 x 100 (VisibleSim's case)"),
+                       ("1M", "flood, 1 M modules, 1000 x 500 x 2")]:
+        scene = bench.scene(box)
+        seconds, peak = bench.measure(["run", scene, "--program", "flood", "--root",
+                                       bench.root(box), "--out", out])
+        with open(out) as f:
+            messages = json.load(f)["messages"]
+        rate, best_rate = messages / seconds, messages / bench.best
+        per_module = peak * 1024 / modules(box)
+        print_goal(label, f"{seconds:.2f} s ({bench.best:.2f}), {per_module:.0f} B/module",
+                   "< 1 s, < 100 B/module", seconds < 1 and per_module < 100)
+        print_goal(f"  its messages ({messages / 1e6:.1f} M) per second of the command",
+                   f"{rate / 1e6:.1f} M/s ({best_rate / 1e6:.1f}) = "
+                   f"{rate / VISIBLESIM_MESSAGES_PER_SECOND:.0f}x VisibleSim",
+                   "> 10 M/s, >= 250x", rate > 10e6)
 
     picture_scene = bench.path("box-180k.json")
     if not os.path.exists(picture_scene):
@@ -147,7 +159,7 @@ def goals(bench, large):
     seconds, peak = bench.measure(["reach", picture_scene, "--goal", "150,150,2", "--out", out,
                                    "--png", png])
     width = png_width(png)
-    print_goal("reach --png, 180 k modules", f"{seconds:.2f} s, {width} px wide",
+    print_goal("reach --png, 180 k modules", f"{seconds:.2f} s ({bench.best:.2f}), {width} px wide",
                "< 2 s, <= 4096 px", seconds < 2 and width <= 4096)
 
     if large:

@@ -38,6 +38,9 @@ class TypedPrograms final : public ProgramSet {
     ids_[slot] = id;
   }
   program::ModuleProgram* programAt(uint32_t slot) override { return &programs_[slot]; }
+  void prefetch(uint32_t slot, bool near) const override {
+    if (!near) __builtin_prefetch(&programs_[slot]);
+  }
 
   std::vector<std::pair<geometry::Cell, int>> distances(
       const ModulesAtEnd& modules) const override {
@@ -63,8 +66,8 @@ class TypedPrograms final : public ProgramSet {
           bool first = true;
           for (int e = 0; e < geometry::kDirectionCount; ++e) {
             if (!(around & (1u << e))) continue;
-            const int stored = e == towardsSelf ? programs_[slot].distanceTowards(d)
-                                                : storedFor(cell, e);
+            const int stored =
+                e == towardsSelf ? programs_[slot].distanceTowards(d) : storedFor(cell, e);
             if (stored == GradientProgram::kUnknown) continue;
             if (smallest == GradientProgram::kUnknown && e != towardsSelf) {
               first = false;
@@ -165,6 +168,7 @@ class EntryPrograms final : public ProgramSet {
 
   void make(ModuleId id, uint32_t slot) override { host_.make(id, slot); }
   program::ModuleProgram* programAt(uint32_t) override { return &host_; }
+  void prefetch(uint32_t slot, bool near) const override { host_.prefetch(slot, near); }
 
   std::vector<std::pair<geometry::Cell, int>> distances(const ModulesAtEnd&) const override {
     return {};

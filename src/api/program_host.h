@@ -31,6 +31,15 @@ class ProgramHost final : public program::ModuleProgram {
     return slot < programs_.size() ? programs_[slot].get() : nullptr;
   }
   size_t size() const { return programs_.size(); }
+  // Brings the pointer to a module's Program into the cache (far ahead), then the Program (near).
+  void prefetch(uint32_t slot, bool near) const {
+    if (slot >= programs_.size()) return;
+    if (near) {
+      __builtin_prefetch(programs_[slot].get());
+    } else {
+      __builtin_prefetch(&programs_[slot]);
+    }
+  }
   const Parameters& parameters() const { return parameters_; }
 
   void onStart(program::ModuleContext& context) override;

@@ -134,6 +134,11 @@ class ProgramSource {
   // The program of the module in a slot, or null for a module that runs none. Called for every
   // event: it should be a lookup.
   virtual ModuleProgram* programAt(uint32_t slot) = 0;
+  // Brings what the program of a slot will read into the cache: the simulator calls it for
+  // events a little ahead, so that their programs are not waited for; first for an event further
+  // ahead (`near` false: what can be found without reading memory), then for a nearer one. Only
+  // a hint.
+  virtual void prefetch(uint32_t /*slot*/, bool /*near*/) const {}
 };
 
 }  // namespace datomsim::program

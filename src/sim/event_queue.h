@@ -8,8 +8,8 @@
 #include <array>
 #include <cstdint>
 #include <deque>
-#include <memory>
 #include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -93,6 +93,14 @@ class EventQueue {
     }
     const Chunk& chunk = *buckets_.begin()->second.head;
     return chunk.events[chunk.begin];
+  }
+  // The module of the event `ahead` places after the next one, when it is in the same chunk of
+  // the earliest bucket; else kNoModule. What the simulator warms the caches for.
+  static constexpr uint32_t kNoModule = UINT32_MAX;
+  uint32_t upcomingModule(uint32_t ahead) const {
+    if (buckets_.empty()) return kNoModule;
+    const Chunk& chunk = *buckets_.begin()->second.head;
+    return chunk.begin + ahead < chunk.end ? chunk.events[chunk.begin + ahead].module : kNoModule;
   }
   Event pop() {
     --size_;

@@ -97,6 +97,8 @@ void writePictures(const world::World& world, bool mobileTakenOut, const motion:
   picture.path = path;
   picture.title = title;
   picture.mobileTakenOut = mobileTakenOut;
+  if (request.palette == "paper") picture.palette = render::DistancePalette::kPaper;
+  if (request.palette == "continuous") picture.palette = render::DistancePalette::kContinuous;
   if (request.scale > 0) picture.pixelsPerCell = request.scale;
   if (request.maxSize >= 0) {
     picture.maxSide = request.maxSize;

@@ -83,6 +83,8 @@ struct PictureRequest {
   // The longest side in pixels, 0 for no limit, -1 for the default: 4000 pixels without a
   // scale (the default scale is lowered to fit), no limit with one.
   int maxSize = -1;
+  // "paper", "continuous", or "auto" (the paper's colours below distance 25).
+  std::string palette = "auto";
 };
 
 // The distance map pictures, for each file asked for. `world` holds the fixed modules; the

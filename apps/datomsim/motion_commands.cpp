@@ -57,6 +57,13 @@ void addReach(CLI::App& app) {
                    "drawn smaller than asked, or whose cells are too small for their numbers, "
                    "says so under its title and on standard error")
       ->check(CLI::NonNegativeNumber);
+  command
+      ->add_option("--palette", asked.palette,
+                   "How distances are coloured in the pictures: paper (the paper's ten colours, "
+                   "then a dark ramp), continuous (one scale from the goal to the farthest cell), "
+                   "or auto: paper while every distance is below 25")
+      ->check(CLI::IsMember({"auto", "paper", "continuous"}))
+      ->capture_default_str();
   command->callback([args] {
     const PictureRequest& pictures = args->pictures;
     // Pictures are files (never standard output): only --out may be "-".

@@ -46,6 +46,28 @@ Color distanceColor(int distance) {
   return mix(kRampStart, kRampEnd, t);
 }
 
+Color continuousDistanceColor(int distance, int maxDistance) {
+  // Viridis at nine even steps (matplotlib's table), from its dark end to its light one.
+  static constexpr std::array<Color, 9> kViridis = {{
+      {68, 1, 84},
+      {71, 45, 123},
+      {59, 82, 139},
+      {44, 114, 142},
+      {33, 145, 140},
+      {39, 173, 129},
+      {92, 200, 99},
+      {170, 220, 50},
+      {253, 231, 37},
+  }};
+  if (distance < 0) return {0, 0, 0};
+  // Near the goal light, far dark.
+  const double t =
+      maxDistance <= 0 ? 1.0 : 1.0 - std::min(1.0, double(distance) / double(maxDistance));
+  const double at = t * double(kViridis.size() - 1);
+  const auto step = std::min(static_cast<size_t>(at), kViridis.size() - 2);
+  return mix(kViridis[step], kViridis[step + 1], at - double(step));
+}
+
 Color moduleFillColor(Color color, int layersAboveLowest) {
   const double t = std::clamp(kLightenPerLayer * layersAboveLowest, 0.0, kMaxLighten);
   return mix(color, Color{255, 255, 255}, t);

@@ -27,6 +27,27 @@ constexpr bool isLabelledDistance(int distance) {
   return distance >= kPaperDistanceCount;
 }
 
+// How a map colours its distances: the paper's ten colours and the dark ramp after them, for maps
+// that stay within a few dozen motions as the paper's do; or one continuous scale from the goal
+// to the farthest cell, for large maps, where the ramp would colour nearly every cell alike.
+enum class DistancePalette { kPaper, kContinuous };
+
+// The palette of a map whose largest distance is `maxDistance`, unless one is asked for: the
+// paper's while every distance has a colour of its own or the ramp's.
+constexpr DistancePalette defaultPalette(int maxDistance) {
+  return maxDistance < kDarkRampEnd ? DistancePalette::kPaper : DistancePalette::kContinuous;
+}
+
+// A colour of the continuous scale: matplotlib's viridis, from yellow at the goal to dark violet at
+// `maxDistance` (and beyond), evenly in perceived lightness, and readable without colour vision.
+Color continuousDistanceColor(int distance, int maxDistance);
+
+// The colour of a distance in a palette; `maxDistance` is the map's largest.
+inline Color distanceColor(int distance, DistancePalette palette, int maxDistance) {
+  return palette == DistancePalette::kPaper ? distanceColor(distance)
+                                            : continuousDistanceColor(distance, maxDistance);
+}
+
 // Colour of the path line and of its markers.
 inline constexpr Color kPathColor{220, 0, 0};
 

@@ -20,12 +20,14 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "datomsim/result.h"
 #include "geometry/cell.h"
+#include "render/colors.h"
 #include "world/world.h"
 
 namespace datomsim::render {
@@ -51,6 +53,9 @@ struct DistanceMapPicture {
   int maxSide = kDefaultMaxPictureSide;
   // Print the distance on every square, not only on those past the paper's colours (10 and up).
   bool labelAllDistances = false;
+  // How distances are coloured; by default the paper's colours while the largest distance is
+  // below 25, else a continuous scale (colors.h, defaultPalette).
+  std::optional<DistancePalette> palette;
   // The scene's mobile module is not in `world` (it was taken out to compute the distances): the
   // title's count says "+ the mobile".
   bool mobileTakenOut = false;

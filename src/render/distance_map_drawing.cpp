@@ -194,7 +194,8 @@ void drawAxes(cairo_t* cr, const Scene& scene, const DistanceMapLayout& layout) 
 void drawModules(cairo_t* cr, const Scene& scene, const DistanceMapLayout& layout,
                  CellPainter& painter) {
   const double radius = layout.pixelsPerCell / 2;
-  const double outline = std::max(1.0, layout.pixelsPerCell / 32);
+  // Below 8 pixels a cell, a pixel of outline on every disc would darken the whole map.
+  const double outline = layout.pixelsPerCell < 8 ? 0.0 : std::max(1.0, layout.pixelsPerCell / 32);
   std::vector<Disc> layer;
   for (size_t i = 0; i < scene.modules.size(); ++i) {
     const Module& module = *scene.modules[i];
@@ -210,11 +211,12 @@ void drawModules(cairo_t* cr, const Scene& scene, const DistanceMapLayout& layou
 }
 
 // The number on a square, centred, in the largest bold size up to fontSize that fits its side.
-void drawSquareLabel(cairo_t* cr, PixelPoint centre, double side, int distance, double fontSize) {
+void drawSquareLabel(cairo_t* cr, PixelPoint centre, double side, int distance, Color fill,
+                     double fontSize) {
   const std::string text = std::to_string(distance);
   selectFont(cr, std::min(fontSize, side / (0.3 + kCharWidth * static_cast<double>(text.size()))),
              true);
-  setColor(cr, textColorOn(distanceColor(distance)));
+  setColor(cr, textColorOn(fill));
   cairo_font_extents_t font;
   cairo_font_extents(cr, &font);
   drawText(cr, text, centre.x, centre.y + (font.ascent - font.descent) / 2 * 0.9, Align::kCentre);
@@ -225,35 +227,37 @@ void setSquarePath(cairo_t* cr, PixelPoint centre, double side) {
 }
 
 double squareBorder(double side) {
-  return std::max(1.0, side / 22);
+  // A square of a few pixels is all border otherwise.
+  return side < 4 ? 0.0 : std::max(1.0, side / 22);
 }
 
 // One square of the legend, with its border, and its number when asked.
-void drawLegendSquare(cairo_t* cr, PixelPoint centre, double side, int distance, bool label,
-                      double fontSize) {
+void drawLegendSquare(cairo_t* cr, PixelPoint centre, double side, int distance, Color fill,
+                      bool label, double fontSize) {
   cairo_new_path(cr);
   setSquarePath(cr, centre, side);
-  setColor(cr, distanceColor(distance));
+  setColor(cr, fill);
   cairo_fill_preserve(cr);
   cairo_set_line_width(cr, squareBorder(side));
   cairo_set_source_rgba(cr, kBorderGrey, kBorderGrey, kBorderGrey, kBorderAlpha);
   cairo_stroke(cr);
-  if (label) drawSquareLabel(cr, centre, side, distance, fontSize);
+  if (label) drawSquareLabel(cr, centre, side, distance, fill, fontSize);
 }
 
 // The distance squares, a layer at a time, lowest first, each layer's numbers over its squares.
-void drawDistances(cairo_t* cr, const Scene& scene, const DistanceMapPicture& picture,
-                   const DistanceMapLayout& layout, CellPainter& painter) {
+void drawDistances(cairo_t* cr, const Scene& scene, const DistanceMapLayout& layout,
+                   CellPainter& painter) {
   std::vector<Square> layer;
   std::vector<size_t> labels;
   for (size_t i = 0; i < scene.distances.size(); ++i) {
     const auto& [cell, distance] = scene.distances[i];
     const double side =
-        std::min(0.9, kSquareSide + kStackGrowth * scene.stackedAbove[i]) * layout.pixelsPerCell;
-    layer.push_back({layout.pixelOf(cell), side, distanceColor(distance), squareBorder(side)});
+        std::min(0.9, squareSide(layout.pixelsPerCell) + kStackGrowth * scene.stackedAbove[i]) *
+        layout.pixelsPerCell;
+    layer.push_back({layout.pixelOf(cell), side, scene.colorOf(distance), squareBorder(side)});
     // A number under a square of the layers above would not show.
-    if ((picture.labelAllDistances || isLabelledDistance(distance)) &&
-        digitCount(distance) <= layout.labelDigits && scene.stackedAbove[i] == 0) {
+    if (scene.labelled(distance) && digitCount(distance) <= layout.labelDigits &&
+        scene.stackedAbove[i] == 0) {
       labels.push_back(i);
     }
     if (i + 1 == scene.distances.size() || scene.distances[i + 1].first.z != cell.z) {
@@ -261,7 +265,7 @@ void drawDistances(cairo_t* cr, const Scene& scene, const DistanceMapPicture& pi
       for (size_t k : labels) {
         drawSquareLabel(cr, layer[k - (i + 1 - layer.size())].centre,
                         kSquareSide * layout.pixelsPerCell, scene.distances[k].second,
-                        layout.fontSize);
+                        scene.colorOf(scene.distances[k].second), layout.fontSize);
       }
       layer.clear();
       labels.clear();
@@ -455,16 +459,17 @@ void drawLegend(cairo_t* cr, const Scene& scene, const DistanceMapLayout& layout
         drawText(cr, row.label, x, baseline, Align::kLeft);
         continue;
       case Kind::kDistance:
-        drawLegendSquare(cr, mark, swatch, row.value, isLabelledDistance(row.value), font);
+        drawLegendSquare(cr, mark, swatch, row.value, scene.colorOf(row.value),
+                         scene.labelled(row.value), font);
         break;
       case Kind::kDistanceRange:
-        drawLegendSquare(cr, mark, swatch, row.value, false, font);
+        drawLegendSquare(cr, mark, swatch, row.value, scene.colorOf(row.value), false, font);
         break;
       case Kind::kStackFrame:
         // As on the map: the lower cell's square grown by one step around the higher one's.
-        drawLegendSquare(cr, mark, swatch, row.value, false, font);
+        drawLegendSquare(cr, mark, swatch, row.value, scene.colorOf(row.value), false, font);
         drawLegendSquare(cr, mark, swatch * kSquareSide / (kSquareSide + kStackGrowth), row.last,
-                         false, font);
+                         scene.colorOf(row.last), false, font);
         break;
       case Kind::kPathLine:
         drawPathLine(cr, {{x, middle}, {x + swatch, middle}}, markerScale * 0.5);
@@ -473,7 +478,7 @@ void drawLegend(cairo_t* cr, const Scene& scene, const DistanceMapLayout& layout
         drawStartMarker(cr, mark, markerScale * 0.6);
         break;
       case Kind::kPathGoal:
-        drawLegendSquare(cr, mark, swatch * 0.75, 0, false, font);
+        drawLegendSquare(cr, mark, swatch * 0.75, 0, scene.colorOf(0), false, font);
         drawGoalMarker(cr, mark, markerScale * 0.5);
         break;
       case Kind::kPathLayer: {
@@ -572,10 +577,14 @@ void CairoCellPainter::discs(cairo_t* cr, const std::vector<Disc>& discs) {
         cairo_arc(pen, origin + phase.first / 256.0, origin + phase.second / 256.0, disc.radius, 0,
                   2 * M_PI);
         setColor(pen, disc.fill);
-        cairo_fill_preserve(pen);
-        setColor(pen, disc.outline);
-        cairo_set_line_width(pen, disc.lineWidth);
-        cairo_stroke(pen);
+        if (disc.lineWidth > 0) {
+          cairo_fill_preserve(pen);
+          setColor(pen, disc.outline);
+          cairo_set_line_width(pen, disc.lineWidth);
+          cairo_stroke(pen);
+        } else {
+          cairo_fill(pen);
+        }
         cairo_destroy(pen);
         sprite->second = cairo_pattern_create_for_surface(image);
         cairo_surface_destroy(image);
@@ -597,6 +606,10 @@ void CairoCellPainter::squares(cairo_t* cr, const std::vector<Square>& squares) 
     cairo_new_path(cr);
     for (size_t i : group) setSquarePath(cr, squares[i].centre, squares[i].side);
     setColor(cr, first.fill);
+    if (first.border <= 0) {
+      cairo_fill(cr);
+      continue;
+    }
     cairo_fill_preserve(cr);
     cairo_set_line_width(cr, first.border);
     cairo_set_source_rgba(cr, kBorderGrey, kBorderGrey, kBorderGrey, kBorderAlpha);
@@ -701,7 +714,7 @@ void draw(cairo_t* cr, const Scene& scene, const DistanceMapPicture& picture,
   drawTitle(cr, scene, picture, layout);
   drawAxes(cr, scene, layout);
   drawModules(cr, scene, layout, painter);
-  drawDistances(cr, scene, picture, layout, painter);
+  drawDistances(cr, scene, layout, painter);
   drawPath(cr, scene, picture, layout);
   drawLegend(cr, scene, layout);
 }

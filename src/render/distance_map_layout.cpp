@@ -79,13 +79,31 @@ std::vector<LegendRow> legendRows(const Scene& scene, const DistanceMapPicture& 
   std::vector<LegendRow> rows;
   if (!scene.presentDistances.empty()) {
     rows.push_back({Kind::kHeader, 0, 0, "distance"});
+    if (scene.palette == DistancePalette::kContinuous) {
+      // The scale at a few even steps from the goal to the farthest cell, each a distance that
+      // is on the map.
+      constexpr int kSteps = 8;
+      int previous = -1;
+      for (int k = 0; k <= kSteps; ++k) {
+        const auto at =
+            std::lower_bound(scene.presentDistances.begin(), scene.presentDistances.end(),
+                             int(std::lround(double(scene.maxDistance) * k / kSteps)));
+        if (at == scene.presentDistances.end() || *at == previous) continue;
+        previous = *at;
+        rows.push_back({Kind::kDistance, *at, *at, std::to_string(*at)});
+      }
+    }
     // From kDarkRampEnd on, every distance has the same colour: one row names them all.
-    const auto dark = std::lower_bound(scene.presentDistances.begin(), scene.presentDistances.end(),
-                                       kDarkRampEnd);
+    const auto dark = scene.palette == DistancePalette::kContinuous
+                          ? scene.presentDistances.begin()
+                          : std::lower_bound(scene.presentDistances.begin(),
+                                             scene.presentDistances.end(), kDarkRampEnd);
     for (auto d = scene.presentDistances.begin(); d != dark; ++d) {
       rows.push_back({Kind::kDistance, *d, *d, std::to_string(*d)});
     }
-    if (scene.presentDistances.end() - dark == 1) {
+    if (scene.palette == DistancePalette::kContinuous) {
+      // The steps above name the scale.
+    } else if (scene.presentDistances.end() - dark == 1) {
       rows.push_back({Kind::kDistance, *dark, *dark, std::to_string(*dark)});
     } else if (dark != scene.presentDistances.end()) {
       const int last = scene.presentDistances.back();
@@ -99,7 +117,7 @@ std::vector<LegendRow> legendRows(const Scene& scene, const DistanceMapPicture& 
       const LegendRow row{Kind::kStackFrame, scene.distances[i].second, scene.nextAboveDistance[i],
                           "frame: a cell 2 layers below"};
       if (!frame) frame = row;
-      if (distanceColor(row.value) != distanceColor(row.last)) {
+      if (scene.colorOf(row.value) != scene.colorOf(row.last)) {
         frame = row;
         break;
       }
@@ -187,7 +205,7 @@ std::string noteOf(const Scene& scene, const DistanceMapPicture& picture,
   // The largest number the squares would carry.
   int largest = -1;
   for (int d : scene.presentDistances) {
-    if (picture.labelAllDistances || isLabelledDistance(d)) largest = d;
+    if (scene.labelled(d)) largest = d;
   }
   if (largest >= 0 && digitCount(largest) > layout.labelDigits) {
     if (layout.labelDigits == 0) {
@@ -313,6 +331,9 @@ Result<Scene> prepare(const DistanceMapPicture& picture) {
   scene.presentDistances.erase(
       std::unique(scene.presentDistances.begin(), scene.presentDistances.end()),
       scene.presentDistances.end());
+  scene.maxDistance = scene.presentDistances.empty() ? 0 : scene.presentDistances.back();
+  scene.palette = picture.palette.value_or(defaultPalette(scene.maxDistance));
+  scene.labelAll = picture.labelAllDistances;
   Stacks stacks = stacksOf(scene.distances);
   scene.stackedAbove = std::move(stacks.above);
   scene.nextAboveDistance = std::move(stacks.nextDistance);

@@ -13,6 +13,7 @@
 
 #include "datomsim/result.h"
 #include "geometry/cell.h"
+#include "render/colors.h"
 #include "render/distance_map.h"
 #include "world/module.h"
 
@@ -32,6 +33,12 @@ inline constexpr double kSquareSide = 0.42;
 // A square under a higher one at the same place seen from the top (layers z and z + 2) grows by
 // this much per square above it, so that it shows as a frame around them instead of vanishing.
 inline constexpr double kStackGrowth = 0.18;
+// The side of a square on a map of `pixelsPerCell`, in spacings: kSquareSide, and more on small
+// maps, so that a square keeps about 5 pixels (up to 0.8 spacing) and the map its colours.
+constexpr double squareSide(double pixelsPerCell) {
+  const double keeps = 5.0 / pixelsPerCell;
+  return keeps <= kSquareSide ? kSquareSide : keeps < 0.8 ? keeps : 0.8;
+}
 
 // The smallest number printed on a square, in pixels: smaller ones are left out.
 inline constexpr double kMinLabelFont = 7;
@@ -75,6 +82,15 @@ struct Scene {
   // Some of them sit half a cell off the tick layer's cells: on a layer of the other parity.
   bool otherParityDrawn = false;
   std::vector<int> presentDistances;  // sorted, distinct
+  DistancePalette palette = DistancePalette::kPaper;
+  int maxDistance = 0;
+  Color colorOf(int distance) const { return distanceColor(distance, palette, maxDistance); }
+  // Whether a square of this distance carries its number where it fits: from 10 on in the
+  // paper's colours (whose ramp colours look alike), every one on a continuous scale.
+  bool labelled(int distance) const {
+    return labelAll || palette == DistancePalette::kContinuous || isLabelledDistance(distance);
+  }
+  bool labelAll = false;
   // The path's cells that get a tag naming their layer: where the layer changes, and the start
   // when it is not on the tick layer. Indices into the picture's path.
   std::vector<size_t> layerTags;

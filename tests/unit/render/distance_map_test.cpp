@@ -460,9 +460,51 @@ TEST_F(DistanceMap, DrawsABigSceneAtTheLargestScaleThatFitsItsLongestSideAndSays
                                          layout.pixelsPerCell)),
             std::string::npos)
       << layout.note;
-  // The cells are where the layout says, in their colours.
+  // The cells are where the layout says, in their colours: on a continuous scale, the distances
+  // going up to 150.
   const PixelPoint middle = layout.pixelOf({75, 75, 1});
-  EXPECT_EQ(pixelAt(image.get(), middle.x, middle.y), distanceColor(0));
+  EXPECT_EQ(pixelAt(image.get(), middle.x, middle.y), continuousDistanceColor(0, 150));
+  const PixelPoint corner = layout.pixelOf({0, 0, 1});
+  EXPECT_EQ(pixelAt(image.get(), corner.x, corner.y), continuousDistanceColor(150, 150));
+}
+
+TEST_F(DistanceMap, ColoursALargeMapOnAContinuousScaleWithItsStepsInTheLegend) {
+  // Up to distance 24 the paper's colours and the dark ramp; from 25 on, where the ramp would
+  // colour everything alike, one scale from the goal to the farthest cell.
+  EXPECT_EQ(defaultPalette(24), DistancePalette::kPaper);
+  EXPECT_EQ(defaultPalette(25), DistancePalette::kContinuous);
+  // The scale goes from light at the goal to dark at the end, every step a new colour.
+  const auto lightness = [](Color c) { return 0.3 * c.r + 0.59 * c.g + 0.11 * c.b; };
+  for (int d = 1; d <= 100; ++d) {
+    EXPECT_LT(lightness(continuousDistanceColor(d, 100)),
+              lightness(continuousDistanceColor(d - 1, 100)))
+        << d;
+  }
+  EXPECT_EQ(continuousDistanceColor(100, 100), continuousDistanceColor(150, 100));
+
+  const BigScene scene(60);  // distances 0..60
+  const auto prepared = detail::prepare(scene.picture);
+  ASSERT_TRUE(prepared.ok()) << prepared.error();
+  EXPECT_EQ(prepared->palette, DistancePalette::kContinuous);
+  std::vector<int> steps;
+  for (const detail::LegendRow& row : prepared->legend) {
+    EXPECT_NE(row.kind, detail::LegendRow::Kind::kDistanceRange) << row.label;
+    if (row.kind == detail::LegendRow::Kind::kDistance) steps.push_back(row.value);
+  }
+  EXPECT_EQ(steps.front(), 0);
+  EXPECT_EQ(steps.back(), 60);
+  EXPECT_GE(steps.size(), 5u);
+  // Asked for, the paper's colours stay, with one row for the ramp's end.
+  DistanceMapPicture paper = scene.picture;
+  paper.palette = DistancePalette::kPaper;
+  const auto asPaper = detail::prepare(paper);
+  ASSERT_TRUE(asPaper.ok());
+  EXPECT_EQ(asPaper->palette, DistancePalette::kPaper);
+  const auto range = std::find_if(
+      asPaper->legend.begin(), asPaper->legend.end(),
+      [](const auto& row) { return row.kind == detail::LegendRow::Kind::kDistanceRange; });
+  ASSERT_NE(range, asPaper->legend.end());
+  EXPECT_EQ(range->label, "25\u201360");
 }
 
 TEST(DistanceMapLayout, DrawsAtTheScaleAskedWhenTheLimitAllowsIt) {
@@ -493,6 +535,7 @@ int whitePixelsInside(cairo_surface_t* image, PixelPoint centre, double side) {
 
 TEST_F(DistanceMap, LeavesOutTheNumbersTooSmallToReadAndSaysSo) {
   DistanceMapPicture picture;
+  picture.palette = DistancePalette::kPaper;  // white numbers on the dark ramp
   picture.pixelsPerCell = 30;  // a square is 12.6 pixels: room for two digits, not three
   picture.distances = {{{0, 0, 0}, 0}, {{2, 0, 0}, 12}, {{4, 0, 0}, 123}};
   DistanceMapLayout layout;
@@ -608,7 +651,8 @@ TEST(DistanceMapLayout, DrawsTheTagsOnThePicture) {
 }
 
 TEST(DistanceMapSvg, KeepsABigSceneSmall) {
-  const BigScene scene(150);
+  BigScene scene(150);
+  scene.picture.palette = DistancePalette::kPaper;  // so that the squares are counted by colour
   const Result<std::string> svg = renderDistanceMapSvg(scene.picture);
   ASSERT_TRUE(svg.ok()) << svg.error();
   tinyxml2::XMLDocument document;

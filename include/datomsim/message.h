@@ -19,6 +19,14 @@
 
 namespace datomsim {
 
+class Message;
+
+namespace detail {
+// How the simulator keeps a message in flight in as many bytes as its payload takes (its
+// agenda holds hundreds of thousands): defined by the library, not part of the API.
+struct MessageBytes;
+}  // namespace detail
+
 class Message {
  public:
   static constexpr size_t kCapacity = 56;
@@ -43,13 +51,16 @@ class Message {
   std::string_view typeName() const { return type_ ? type_->name : std::string_view(); }
 
  private:
+  friend struct detail::MessageBytes;
+
   // One record per message type: its address identifies the type without RTTI, and it holds the
-  // name, so that a message carries one pointer besides its payload.
+  // name and the payload's size, so that a message carries one pointer besides its payload.
   struct Type {
     std::string_view name;
+    size_t size;
   };
   template <typename T>
-  static inline const Type kType{T::kName};
+  static inline const Type kType{T::kName, sizeof(T)};
 
   const Type* type_ = nullptr;
   alignas(8) std::array<unsigned char, kCapacity> bytes_{};

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <deque>
 #include <map>
 #include <memory>
@@ -41,13 +42,31 @@ struct Event {
   Message message;
 };
 
+}  // namespace datomsim::sim
+
+// The library's access to a message's type and payload bytes (datomsim/message.h).
+struct datomsim::detail::MessageBytes {
+  static const void* type(const Message& message) { return message.type_; }
+  static size_t size(const Message& message) { return message.type_ ? message.type_->size : 0; }
+  static const unsigned char* bytes(const Message& message) { return message.bytes_.data(); }
+  static void assign(Message& message, const void* type, const unsigned char* bytes, size_t size) {
+    message.type_ = static_cast<const Message::Type*>(type);
+    std::memcpy(message.bytes_.data(), bytes, size);
+  }
+};
+
+namespace datomsim::sim {
+
 // Events grouped by time: one first-in first-out bucket per distinct time, buckets ordered by
 // time. Within a bucket, events keep the order they were pushed in, which is their sequence
 // order, so the queue yields exactly (time, sequence) order. Message delays are few distinct
 // values, so a push lands in the bucket of the push before it (no lookup) or one found among a
-// few, and a pop is O(1). A bucket is a chain of fixed chunks of events taken from a pool and
-// given back once read, so that the queue holds memory for the events in flight (a million-module
-// flood has hundreds of thousands at once) and allocates only when more are in flight than ever.
+// few, and a pop is O(1).
+//
+// A bucket is a chain of fixed chunks from a pool, given back once read, so that the queue holds
+// memory for the events in flight only. In a chunk an event takes a 32-byte head and its
+// message's payload, not a whole Message: a flood's hop count travels in 40 bytes where an Event
+// is 96, and a million-module flood has hundreds of thousands in flight at once.
 class EventQueue {
  public:
   EventQueue() = default;
@@ -60,18 +79,15 @@ class EventQueue {
 
   void schedule(Time time, EventKind kind, uint32_t moduleIndex, int32_t argument,
                 const Message& message = {}) {
-    slotAt(time) = Event{time, nextSequence_++, kind, moduleIndex, argument, message};
-    ++size_;
+    write(time, nextSequence_++, kind, moduleIndex, argument, message);
   }
-  void push(Event event) {
-    event.sequence = nextSequence_++;
-    slotAt(event.time) = std::move(event);
-    ++size_;
+  void push(const Event& event) {
+    write(event.time, nextSequence_++, event.kind, event.module, event.argument, event.message);
   }
   // Schedules a kStart event at `time` for each module, in this order: the same events as one
-  // schedule() each, kept as 4 bytes per module instead of an Event (starting a million modules
-  // at once would hold a hundred megabytes of events otherwise). `time` may not be before the
-  // time of an earlier batch.
+  // schedule() each, kept as 4 bytes per module (starting a million modules at once would hold
+  // tens of megabytes of events otherwise). `time` may not be before the time of an earlier
+  // batch.
   void scheduleStarts(Time time, std::vector<uint32_t> moduleIndices) {
     if (moduleIndices.empty()) return;
     size_ += moduleIndices.size();
@@ -88,11 +104,12 @@ class EventQueue {
   }
   const Event& top() const {
     if (startsFirst()) {
-      startHead_ = starts_.front().head();
-      return startHead_;
+      top_ = starts_.front().head();
+    } else {
+      const auto& [time, bucket] = *buckets_.begin();
+      read(time, *bucket.head, bucket.head->readOffset, top_);
     }
-    const Chunk& chunk = *buckets_.begin()->second.head;
-    return chunk.events[chunk.begin];
+    return top_;
   }
   // The module of the event `ahead` places after the next one, when it is in the same chunk of
   // the earliest bucket; else kNoModule. What the simulator warms the caches for.
@@ -100,13 +117,16 @@ class EventQueue {
   uint32_t upcomingModule(uint32_t ahead) const {
     if (buckets_.empty()) return kNoModule;
     const Chunk& chunk = *buckets_.begin()->second.head;
-    return chunk.begin + ahead < chunk.end ? chunk.events[chunk.begin + ahead].module : kNoModule;
+    const uint32_t ordinal = chunk.readOrdinal + ahead;
+    return ordinal < chunk.writeOrdinal ? chunk.modules[ordinal] : kNoModule;
   }
-  Event pop() {
+  // Takes the earliest event; the reference is valid until the next pop.
+  const Event& pop() {
     --size_;
+    Event& event = popped_;
     if (startsFirst()) {
       StartBatch& batch = starts_.front();
-      const Event event = batch.head();
+      event = batch.head();
       if (++batch.next == batch.modules.size()) starts_.pop_front();
       now_ = event.time;
       return event;
@@ -114,8 +134,12 @@ class EventQueue {
     auto first = buckets_.begin();
     Bucket& bucket = first->second;
     Chunk* chunk = bucket.head;
-    Event event = std::move(chunk->events[chunk->begin++]);
-    if (chunk->begin == chunk->end) {
+    // Built in place: an event copied out whole just after its payload was written in pieces
+    // makes the processor wait for the pieces.
+    read(first->first, *chunk, chunk->readOffset, event);
+    chunk->readOffset += recordSize(*chunk, chunk->readOffset);
+    ++chunk->readOrdinal;
+    if (chunk->readOrdinal == chunk->writeOrdinal) {
       // Read: back to the pool, and the bucket with it when it was its last chunk.
       bucket.head = chunk->next;
       release(chunk);
@@ -129,11 +153,22 @@ class EventQueue {
   }
 
  private:
-  static constexpr uint32_t kChunkEvents = 256;
+  // An event in a chunk: this head, then its message's payload.
+  struct Head {
+    uint64_t sequence;
+    const void* type;  // the message's type record, or null
+    uint32_t module;
+    int32_t argument;
+    EventKind kind;
+    uint8_t size;  // payload bytes after the head
+  };
+  static constexpr size_t kChunkBytes = 32 * 1024;
+  static constexpr size_t kChunkEvents = kChunkBytes / sizeof(Head);
   struct Chunk {
-    std::array<Event, kChunkEvents> events;
-    uint32_t begin = 0;  // the events before it are taken
-    uint32_t end = 0;    // the events from it on are not written yet
+    alignas(Head) std::array<unsigned char, kChunkBytes> bytes;
+    std::array<uint32_t, kChunkEvents> modules;  // by the events' order in the chunk
+    uint32_t readOffset = 0, writeOffset = 0;
+    uint32_t readOrdinal = 0, writeOrdinal = 0;
     Chunk* next = nullptr;
   };
   struct Bucket {
@@ -150,16 +185,45 @@ class EventQueue {
     }
   };
 
-  // The place of a new event at `time`, at the end of its bucket.
-  Event& slotAt(Time time) {
+  // A head and its payload, rounded up so that the next head is aligned.
+  static constexpr size_t footprint(size_t payload) {
+    return (sizeof(Head) + payload + alignof(Head) - 1) / alignof(Head) * alignof(Head);
+  }
+  static size_t recordSize(const Chunk& chunk, uint32_t offset) {
+    return footprint(reinterpret_cast<const Head*>(chunk.bytes.data() + offset)->size);
+  }
+  // The event at `offset` into `event`. Its message's bytes past the payload keep what was
+  // there: a message is read as its own type (Message::as), never past its size.
+  static void read(Time time, const Chunk& chunk, uint32_t offset, Event& event) {
+    const auto* head = reinterpret_cast<const Head*>(chunk.bytes.data() + offset);
+    event.time = time;
+    event.sequence = head->sequence;
+    event.kind = head->kind;
+    event.module = head->module;
+    event.argument = head->argument;
+    detail::MessageBytes::assign(event.message, head->type,
+                                 chunk.bytes.data() + offset + sizeof(Head), head->size);
+  }
+  void write(Time time, uint64_t sequence, EventKind kind, uint32_t module, int32_t argument,
+             const Message& message) {
+    const size_t payload = detail::MessageBytes::size(message);
+    const size_t bytes = footprint(payload);
     if (last_ == buckets_.end() || last_->first != time) last_ = buckets_.try_emplace(time).first;
     Bucket& bucket = last_->second;
-    if (!bucket.tail || bucket.tail->end == kChunkEvents) {
+    if (!bucket.tail || bucket.tail->writeOffset + bytes > kChunkBytes) {
       Chunk* chunk = acquire();
       (bucket.tail ? bucket.tail->next : bucket.head) = chunk;
       bucket.tail = chunk;
     }
-    return bucket.tail->events[bucket.tail->end++];
+    Chunk& chunk = *bucket.tail;
+    auto* head = reinterpret_cast<Head*>(chunk.bytes.data() + chunk.writeOffset);
+    *head = Head{sequence, detail::MessageBytes::type(message), module, argument,
+                 kind,     static_cast<uint8_t>(payload)};
+    std::memcpy(chunk.bytes.data() + chunk.writeOffset + sizeof(Head),
+                detail::MessageBytes::bytes(message), payload);
+    chunk.writeOffset += uint32_t(bytes);
+    chunk.modules[chunk.writeOrdinal++] = module;
+    ++size_;
   }
   Chunk* acquire() {
     if (pool_.empty()) {
@@ -171,7 +235,8 @@ class EventQueue {
     return chunk;
   }
   void release(Chunk* chunk) {
-    chunk->begin = chunk->end = 0;
+    chunk->readOffset = chunk->writeOffset = 0;
+    chunk->readOrdinal = chunk->writeOrdinal = 0;
     chunk->next = nullptr;
     pool_.push_back(chunk);
   }
@@ -180,10 +245,11 @@ class EventQueue {
     if (starts_.empty()) return false;
     if (buckets_.empty()) return true;
     const StartBatch& batch = starts_.front();
-    const Chunk& chunk = *buckets_.begin()->second.head;
-    const Event& event = chunk.events[chunk.begin];
+    const auto& [time, bucket] = *buckets_.begin();
+    const auto* head =
+        reinterpret_cast<const Head*>(bucket.head->bytes.data() + bucket.head->readOffset);
     return std::pair(batch.time, batch.firstSequence + batch.next) <
-           std::pair(event.time, event.sequence);
+           std::pair(time, head->sequence);
   }
 
   std::map<Time, Bucket> buckets_;
@@ -191,7 +257,8 @@ class EventQueue {
   std::vector<std::unique_ptr<Chunk>> chunks_;              // every chunk, owned
   std::vector<Chunk*> pool_;                                // the chunks not in a bucket
   std::deque<StartBatch> starts_;
-  mutable Event startHead_;
+  mutable Event top_;
+  Event popped_;
   size_t size_ = 0;
   uint64_t nextSequence_ = 0;
   Time now_ = 0;

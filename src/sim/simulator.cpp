@@ -234,7 +234,7 @@ Status Simulator::run(Time until) {
     if (const uint32_t near = agenda_.upcomingModule(kNear); near != EventQueue::kNoModule) {
       if (programs_) programs_->prefetch(near, true);
     }
-    const Event event = agenda_.pop();
+    const Event& event = agenda_.pop();
     current_ = &event;
     mechanics_.clearEvent();
     placed_.clear();

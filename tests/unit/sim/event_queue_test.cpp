@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
@@ -66,6 +68,85 @@ TEST(EventQueue, BatchOfStartsRunsAsOneStartEach) {
   EXPECT_EQ(queue.pop().module, 2u);
   EXPECT_EQ(queue.pop().module, 8u);
   EXPECT_TRUE(queue.empty());
+}
+
+// Messages of every size, from none to the whole capacity, come out as they went in, whatever the
+// sizes around them and however many chunks they fill.
+struct Tiny {
+  static constexpr std::string_view kName = "Tiny";
+  uint8_t value;
+};
+struct Middle {
+  static constexpr std::string_view kName = "Middle";
+  int32_t a;
+  double b;
+  int16_t c;
+};
+struct Full {
+  static constexpr std::string_view kName = "Full";
+  std::array<unsigned char, Message::kCapacity> bytes;
+};
+
+TEST(EventQueue, KeepsEveryMessageWholeHoweverSmallOrLarge) {
+  EventQueue queue;
+  constexpr int kEvents = 5000;  // several chunks of each kind
+  for (int i = 0; i < kEvents; ++i) {
+    const Time time = 10 * (i % 3);
+    switch (i % 4) {
+      case 0:
+        queue.schedule(time, EventKind::kMessage, uint32_t(i), i,
+                       Message::of(Tiny{static_cast<uint8_t>(i)}));
+        break;
+      case 1:
+        queue.schedule(time, EventKind::kMessage, uint32_t(i), i,
+                       Message::of(Middle{i, i * 0.5, static_cast<int16_t>(-i)}));
+        break;
+      case 2: {
+        Full full;
+        for (size_t k = 0; k < full.bytes.size(); ++k) full.bytes[k] = uint8_t(i + k);
+        queue.schedule(time, EventKind::kMessage, uint32_t(i), i, Message::of(full));
+        break;
+      }
+      default:
+        queue.schedule(time, EventKind::kTimer, uint32_t(i), i);
+    }
+  }
+  int taken = 0;
+  Time last = 0;
+  while (!queue.empty()) {
+    const Event& event = queue.pop();
+    ASSERT_GE(event.time, last);
+    last = event.time;
+    const int i = event.argument;
+    EXPECT_EQ(event.module, uint32_t(i));
+    EXPECT_EQ(event.time, 10 * (i % 3));
+    switch (i % 4) {
+      case 0:
+        ASSERT_TRUE(event.message.as<Tiny>());
+        EXPECT_EQ(event.message.as<Tiny>()->value, static_cast<uint8_t>(i));
+        break;
+      case 1: {
+        const Middle* middle = event.message.as<Middle>();
+        ASSERT_TRUE(middle);
+        EXPECT_EQ(middle->a, i);
+        EXPECT_EQ(middle->b, i * 0.5);
+        EXPECT_EQ(middle->c, static_cast<int16_t>(-i));
+        EXPECT_FALSE(event.message.as<Tiny>());
+        break;
+      }
+      case 2: {
+        const Full* full = event.message.as<Full>();
+        ASSERT_TRUE(full);
+        for (size_t k = 0; k < full->bytes.size(); ++k) EXPECT_EQ(full->bytes[k], uint8_t(i + k));
+        break;
+      }
+      default:
+        EXPECT_EQ(event.kind, EventKind::kTimer);
+        EXPECT_TRUE(event.message.typeName().empty());
+    }
+    ++taken;
+  }
+  EXPECT_EQ(taken, kEvents);
 }
 
 }  // namespace

@@ -20,14 +20,16 @@ constexpr uint8_t pistonBit(int piston) {
 
 Mechanics::Mechanics(world::World& world, EventQueue& agenda, const Announcer& announce,
                      Time deformationTime)
-    : world_(world),
-      agenda_(agenda),
-      announce_(announce),
-      deformationTime_(deformationTime),
-      pistons_(world.size()) {}
+    : world_(world), agenda_(agenda), announce_(announce), deformationTime_(deformationTime) {}
+
+Mechanics::Pistons& Mechanics::stateOf(uint32_t index) {
+  // Made on the first piston that moves: a run whose modules never deform keeps none.
+  if (pistons_.empty()) pistons_.resize(world_.size());
+  return pistons_[index];
+}
 
 Status Mechanics::checkCompress(uint32_t index, int ownPiston, const char* busy) const {
-  const Pistons& state = pistons_[index];
+  const Pistons& state = pistons(index);
   const Module& module = world_.modules()[index];
   if (ownPiston < 0 || ownPiston >= geometry::kAxisCount) {
     return Error{fmt::format("module {}: no piston {}", module.id.value, ownPiston)};
@@ -46,7 +48,7 @@ Status Mechanics::checkCompress(uint32_t index, int ownPiston, const char* busy)
 }
 
 void Mechanics::compress(uint32_t index, int ownPiston) {
-  Pistons& state = pistons_[index];
+  Pistons& state = stateOf(index);
   const Module& module = world_.modules()[index];
   state.piston = static_cast<int8_t>(ownPiston);
   state.phase = Phase::kCompressing;
@@ -64,7 +66,7 @@ void Mechanics::compress(uint32_t index, int ownPiston) {
 }
 
 Status Mechanics::release(uint32_t index) {
-  Pistons& state = pistons_[index];
+  Pistons& state = stateOf(index);
   const Module& module = world_.modules()[index];
   if (state.phase != Phase::kCompressed) {
     return Error{fmt::format("module {}: no compressed piston to release", module.id.value)};
@@ -82,7 +84,7 @@ Status Mechanics::release(uint32_t index) {
 }
 
 bool Mechanics::finishDeformation(uint32_t index, std::span<const int16_t> motionOf) {
-  Pistons& state = pistons_[index];
+  Pistons& state = stateOf(index);
   const ModuleId id = world_.modules()[index].id;
   const int piston = state.piston;
   if (state.phase == Phase::kCompressing) {
@@ -104,7 +106,7 @@ bool Mechanics::finishDeformation(uint32_t index, std::span<const int16_t> motio
 }
 
 void Mechanics::drive(uint32_t index, int ownPiston, Time duration) {
-  Pistons& state = pistons_[index];
+  Pistons& state = stateOf(index);
   state.piston = static_cast<int8_t>(ownPiston);
   state.phase = Phase::kDriving;
   state.compressedMask |= pistonBit(ownPiston);
@@ -118,12 +120,12 @@ void Mechanics::drive(uint32_t index, int ownPiston, Time duration) {
 void Mechanics::driveBack(uint32_t index, Time duration) {
   const Time now = agenda_.now();
   announce_(&Observer::pistonMoving, now,
-            PistonMove{world_.modules()[index].id, pistons_[index].piston, 1, 0, now, duration,
+            PistonMove{world_.modules()[index].id, pistons(index).piston, 1, 0, now, duration,
                        PistonCause::kMotion});
 }
 
 void Mechanics::rest(uint32_t index) {
-  Pistons& state = pistons_[index];
+  Pistons& state = stateOf(index);
   state.compressedMask &= uint8_t(~pistonBit(state.piston));
   state.piston = -1;
   state.phase = Phase::kRest;
@@ -134,16 +136,16 @@ void Mechanics::beginSwitch(uint32_t index, int ownPiston) {
   const ModuleId id = world_.modules()[index].id;
   const Time now = agenda_.now();
   announce_(&Observer::pistonMoving, now,
-            PistonMove{id, pistons_[index].piston, 1, 0, now, deformationTime_,
+            PistonMove{id, pistons(index).piston, 1, 0, now, deformationTime_,
                        PistonCause::kDoubleDeformation});
   announce_(&Observer::pistonMoving, now,
             PistonMove{id, ownPiston, 0, 1, now + deformationTime_, deformationTime_,
                        PistonCause::kDoubleDeformation});
-  pistons_[index].next = static_cast<int8_t>(ownPiston);
+  stateOf(index).next = static_cast<int8_t>(ownPiston);
 }
 
 void Mechanics::finishSwitch(uint32_t index, std::span<const int16_t> motionOf) {
-  Pistons& state = pistons_[index];
+  Pistons& state = stateOf(index);
   const int second = state.next;
   state.next = -1;
   state.compressedMask &= uint8_t(~pistonBit(state.piston));
@@ -175,17 +177,17 @@ void Mechanics::setLatched(const world::LatchPair& pair, bool latched) {
 
 void Mechanics::relatch(uint32_t index, std::span<const int16_t> motionOf) {
   const Module& module = world_.modules()[index];
-  const int ownAxis =
-      pistons_[index].piston >= 0 ? module.orientation.worldAxis(pistons_[index].piston) : -1;
+  const int ownPiston = pistons(index).piston;
+  const int ownAxis = ownPiston >= 0 ? module.orientation.worldAxis(ownPiston) : -1;
   for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
     const Module* neighbour = world_.neighbour(module, direction);
     if (!neighbour || world_.isLatched(module, direction)) continue;
     if (ownAxis >= 0 && geometry::axisMovesDirection(ownAxis, direction)) continue;
     const uint32_t other = *world_.indexOf(neighbour->id);
-    if (motionOf[other] >= 0) continue;
-    const Pistons& pistons = pistons_[other];
-    if (pistons.piston >= 0 &&
-        geometry::axisMovesDirection(neighbour->orientation.worldAxis(pistons.piston),
+    if (!motionOf.empty() && motionOf[other] >= 0) continue;
+    const Pistons& theirs = pistons(other);
+    if (theirs.piston >= 0 &&
+        geometry::axisMovesDirection(neighbour->orientation.worldAxis(theirs.piston),
                                      geometry::oppositeDirection(direction))) {
       continue;
     }

@@ -47,7 +47,10 @@ class Mechanics {
   Mechanics(world::World& world, EventQueue& agenda, const Announcer& announce,
             Time deformationTime);
 
-  const Pistons& pistons(uint32_t index) const { return pistons_[index]; }
+  const Pistons& pistons(uint32_t index) const {
+    static constexpr Pistons kAtRest{};
+    return pistons_.empty() ? kAtRest : pistons_[index];
+  }
 
   // What a program asks. checkCompress refuses, with the reason, no such piston, a module that is
   // busy (in a motion, or with one queued: `busy` says which), another piston not at rest;
@@ -95,7 +98,9 @@ class Mechanics {
   EventQueue& agenda_;
   const Announcer& announce_;
   Time deformationTime_;
-  std::vector<Pistons> pistons_;  // by world module index
+  // A module's pistons to change, made for every module on the first change.
+  Pistons& stateOf(uint32_t index);
+  std::vector<Pistons> pistons_;  // by world module index; empty until a piston moves
   std::vector<uint32_t> touched_;
   std::vector<world::BrokenLatch> broken_;
 };

@@ -38,7 +38,7 @@ MotionExecutor::MotionExecutor(world::World& world, const motion::RuleOptions& r
       announce_(announce),
       times_(times),
       limits_(limits),
-      motionOf_(world.size(), -1) {
+      motionOf_() {
   // The simulator judges connectivity itself, with the motions in progress (cutOff); the rule's
   // own check sees the world at rest and would misread a hinge.
   rules_.connectivity = false;
@@ -262,6 +262,8 @@ void MotionExecutor::begin(uint32_t index, const motion::Motion& motion, Claim c
       now + 2 * times_.quarterTurn + (active.hasDoubleDeformation() ? 2 * times_.deformation : 0);
   active.claim = std::move(claim);
   reservations_.reserve(active.claim, {slot, world_.modules()[index].id, active.until});
+  // Made on the first motion: a run without motions keeps no slot per module.
+  if (motionOf_.empty()) motionOf_.assign(world_.size(), -1);
   motionOf_[index] = static_cast<int16_t>(slot);
   motionOf_[pivotIndex] = static_cast<int16_t>(slot);
   ++activeCount_;

@@ -94,7 +94,7 @@ class MotionExecutor {
 
   // The motion slot of every module (mobile or pivot of a motion), -1 when in none.
   std::span<const int16_t> motionOf() const { return motionOf_; }
-  bool inMotion(uint32_t index) const { return motionOf_[index] >= 0; }
+  bool inMotion(uint32_t index) const { return !motionOf_.empty() && motionOf_[index] >= 0; }
   bool isQueued(uint32_t index) const;
   // Every slot, active or free (the invariants check the active ones).
   std::span<const ActiveMotion> motions() const { return motions_; }
@@ -137,7 +137,7 @@ class MotionExecutor {
   Reservations reservations_;
   std::vector<ActiveMotion> motions_;
   int activeCount_ = 0;
-  std::vector<int16_t> motionOf_;  // by world module index
+  std::vector<int16_t> motionOf_;  // by world module index; empty until the first motion
   struct Queued {
     uint32_t mobile;
     motion::Motion request;

@@ -70,7 +70,9 @@ class World {
   }
 
   // Bit d set: a module is in the neighbour of `cell` in world direction d.
-  uint16_t neighbourMask(const geometry::Cell& cell) const { return occupancy_.neighbourMask(cell); }
+  uint16_t neighbourMask(const geometry::Cell& cell) const {
+    return occupancy_.neighbourMask(cell);
+  }
 
   // The neighbour of a module in world direction d (0..11), or nullptr.
   const Module* neighbour(const Module& module, int direction) const {
@@ -141,8 +143,8 @@ void World::forEachInCellOrder(F&& f) const {
     high = {std::max(high.x, module.cell.x), std::max(high.y, module.cell.y),
             std::max(high.z, module.cell.z)};
   }
-  const double volume = (double(high.x) - low.x + 1) * (double(high.y) - low.y + 1) *
-                        (double(high.z) - low.z + 1);
+  const double volume =
+      (double(high.x) - low.x + 1) * (double(high.y) - low.y + 1) * (double(high.z) - low.z + 1);
   if (volume <= 4.0 * double(modules_.size())) {
     for (int32_t x = low.x; x <= high.x; ++x) {
       for (int32_t y = low.y; y <= high.y; ++y) {

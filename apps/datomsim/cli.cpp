@@ -65,6 +65,14 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
   app.name(argc > 0 && argv[0] ? std::filesystem::path(argv[0]).filename().string() : "datomsim");
   app.require_subcommand(1);
   app.set_version_flag("--version", "datomsim 0.1.0");
+  bool quiet = false;
+  app.add_flag("-q,--quiet", quiet,
+               "Say nothing but errors: no \"wrote FILE\" lines and no notes on standard error");
+  // --quiet may come after the subcommand too.
+  app.fallthrough();
+  app::setQuiet(false);
+  // Before any subcommand's callback runs: CLI11 runs them once the whole line is parsed.
+  app.parse_complete_callback([&quiet] { app::setQuiet(quiet); });
   app::addGeometryCommand(app);
   app::addSceneCommands(app);
   app::addMotionCommands(app);

@@ -14,6 +14,30 @@ void check(const Status& status) {
   if (!status.ok()) throw UsageError(status.error());
 }
 
+namespace {
+
+// The command line's one piece of state, set by datomsim::main for each call from its --quiet.
+bool quietOutput = false;
+
+}  // namespace
+
+void setQuiet(bool quiet) {
+  quietOutput = quiet;
+}
+
+void reportWritten(const std::string& path, std::string_view holds) {
+  if (quietOutput) return;
+  if (holds.empty()) {
+    fmt::print(stderr, "wrote {}\n", path);
+  } else {
+    fmt::print(stderr, "wrote {} ({})\n", path, holds);
+  }
+}
+
+void note(std::string_view line) {
+  if (!quietOutput) fmt::print(stderr, "{}\n", line);
+}
+
 void writeOutput(const std::string& path, const std::string& text) {
   writeOutput(path, [&](std::FILE* file) -> Status {
     if (std::fwrite(text.data(), 1, text.size(), file) != text.size()) return Error{""};
@@ -32,6 +56,7 @@ void writeOutput(const std::string& path, const std::function<Status(std::FILE*)
     if (const Status written = write(file); !written) return Error{"cannot write " + path};
     return Ok{};
   }));
+  reportWritten(path);
 }
 
 namespace {
@@ -118,10 +143,17 @@ void writePictures(const world::World& world, bool mobileTakenOut, const motion:
       hint = fmt::format("; --scale {} draws them at full size, {} x {} px", picture.pixelsPerCell,
                          fullSize.width, fullSize.height);
     }
-    fmt::print(stderr, "{}: {}{}\n", files, layout.note, hint);
+    note(fmt::format("{}: {}{}", files, layout.note, hint));
   }
-  if (!request.png.empty()) check(render::writeDistanceMapPng(picture, request.png));
-  if (!request.svg.empty()) check(render::writeDistanceMapSvg(picture, request.svg));
+  const std::string size = fmt::format("{} x {} px", layout.width, layout.height);
+  if (!request.png.empty()) {
+    check(render::writeDistanceMapPng(picture, request.png));
+    reportWritten(request.png, size);
+  }
+  if (!request.svg.empty()) {
+    check(render::writeDistanceMapSvg(picture, request.svg));
+    reportWritten(request.svg, size);
+  }
 }
 
 }  // namespace datomsim::app

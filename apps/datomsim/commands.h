@@ -8,6 +8,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -18,6 +19,7 @@
 #include "datomsim/result.h"
 #include "experiment/run.h"
 #include "geometry/cell.h"
+#include "io/scene.h"
 #include "motion/reach.h"
 #include "world/world.h"
 
@@ -55,7 +57,16 @@ std::string runJson(const algorithms::ProgramInfo& program, const experiment::Ru
 Status writeRunJson(const algorithms::ProgramInfo& program, const experiment::RunResult& result,
                     const std::map<std::string, std::string>& parameters, std::FILE* file);
 
-// Writes text to a file atomically, or to standard output when the path is empty or "-".
+// What a command tells a person on standard error besides errors: "wrote PATH" for every file it
+// writes (every command, every file, and none it does not write), with what the file holds when
+// that helps; and notes, such as a picture drawn smaller than asked. `datomsim --quiet`
+// silences both; errors and warnings of failure are always said.
+void setQuiet(bool quiet);
+void reportWritten(const std::string& path, std::string_view holds = {});
+void note(std::string_view line);
+
+// Writes text to a file atomically, or to standard output when the path is empty or "-"; a file
+// is reported (reportWritten).
 void writeOutput(const std::string& path, const std::string& text);
 // The same for text written as it is made, by `write` on an open file.
 void writeOutput(const std::string& path, const std::function<Status(std::FILE*)>& write);
@@ -73,6 +84,17 @@ void refuseClashes(const std::vector<NamedPath>& inputs, const std::vector<Named
 
 // The --out option whose value writeOutput takes.
 void addOutputOption(CLI::App& command, std::string& out);
+
+// VisibleSim opens only a file that declares its grid: a scene about to be written as XML (`out`'s
+// extension says) without one gets the smallest grid that holds its modules and its grid targets
+// with room to move, and a note says so. Refuses a scene with cells before the grid's origin.
+void declareGridForVisibleSim(io::Scene& scene, const std::string& out);
+// The same modules (ids, orientations, colours, order) moved by `offset` into a world of
+// `bounds`, all neighbours latched.
+world::World rebuilt(const world::World& from, const world::Bounds& bounds,
+                     const geometry::Cell& offset);
+// The smallest and largest grid coordinates (x + floor(z/2), y + floor(z/2), z) of the modules.
+std::pair<geometry::Cell, geometry::Cell> gridExtent(const world::World& world);
 
 // The distance map pictures asked for: their files (none when empty) and their size.
 struct PictureRequest {

@@ -45,7 +45,7 @@ void addDemoCommand(CLI::App& app) {
     const auto directory = exporting::executableDirectory();
     const auto bundle = directory.ok() ? exporting::loadViewerBundle("", *directory)
                                        : Result<std::string>(Error{directory.error()});
-    if (!bundle.ok()) fmt::print(stderr, "no viewer pages: {}\n", bundle.error());
+    if (!bundle.ok()) note("no viewer pages: " + bundle.error());
 
     const motion::RuleTable table;
     const experiment::PaperExperiment experiment = unwrap(experiment::runPaperExperiment(table));
@@ -73,6 +73,7 @@ void addDemoCommand(CLI::App& app) {
             folder / (name + "-viewer.html"), *bundle,
             {title, result.run.trace,
              exporting::overlayJson(result.distances.sorted(), result.path, scene::kPaperGoal)}));
+        reportWritten((folder / (name + "-viewer.html")).string());
       }
 
       nlohmann::ordered_json entry;
@@ -114,6 +115,7 @@ void addDemoCommand(CLI::App& app) {
     if (bundle.ok()) {
       check(exporting::writeViewerPage(folder / "arch-build-viewer.html", *bundle,
                                        {request.description, built.trace, ""}));
+      reportWritten((folder / "arch-build-viewer.html").string());
     }
     const double makespan = double(built.statistics.lastMotionEnd) / kSecond;
     const double baseline = double(sequential.statistics.lastMotionEnd) / kSecond;
@@ -126,7 +128,7 @@ void addDemoCommand(CLI::App& app) {
     arch["speed_up"] = makespan > 0 ? baseline / makespan : 0.0;
     summary["arch_build"] = std::move(arch);
     writeOutput((folder / "summary.json").string(), summary.dump(2) + "\n");
-    fmt::print("wrote the paper's experiment to {}/\n", args->out);
+    fmt::print("The paper's experiment, files in {}/:\n", args->out);
     for (const experiment::PaperScene& result : experiment.scenes) {
       fmt::print("  arch hole {} high: {} reachable cells, path of {} motions {} the arch\n",
                  result.holeHeight, result.distances.size(), result.path.size() - 1,

@@ -69,9 +69,9 @@ void addMeshCommand(CLI::App& app) {
         fmt::format("Datom, r = {}, t = {}, {}", args->radius, args->thickness, state);
     check(exporting::writeMesh(mesh, args->out, comment));
     const auto [low, high] = mesh.bounds();
-    fmt::print("wrote {}: {} parts, {} triangles, {:.4g} x {:.4g} x {:.4g}\n", args->out,
-               mesh.groups.size(), mesh.triangleCount(), high.x - low.x, high.y - low.y,
-               high.z - low.z);
+    reportWritten(args->out, fmt::format("{} parts, {} triangles, {:.4g} x {:.4g} x {:.4g}",
+                                         mesh.groups.size(), mesh.triangleCount(), high.x - low.x,
+                                         high.y - low.y, high.z - low.z));
   });
 }
 

@@ -27,8 +27,9 @@ void write(scene::ReshapeCase reshape, target::Target target, const std::string&
   scene.name = "reshape: " + reshape.description;
   scene.description = reshape.description;
   scene.targets.push_back(std::move(target));
+  declareGridForVisibleSim(scene, out);
   check(io::writeScene(scene, out));
-  fmt::print(stderr, "wrote {} ({} modules; {})\n", out, scene.world.size(), reshape.description);
+  reportWritten(out, fmt::format("{} modules; {}", scene.world.size(), reshape.description));
 }
 
 // A heap in the floor's corner into a cylinder in its middle, the target written in CSG: the

@@ -69,62 +69,6 @@ target::Target boxTarget(const GenerateArguments& args) {
   return unwrap(target::Target::grid(cells));
 }
 
-// The same modules (ids, orientations, colours, order) moved by `offset` into a world of `bounds`,
-// all neighbours latched.
-world::World rebuilt(const world::World& from, const world::Bounds& bounds,
-                     const geometry::Cell& offset) {
-  world::World world(bounds);
-  world.reserve(from.size());
-  for (world::Module module : from.modules()) {
-    module.cell = module.cell + offset;
-    check(world.add(module));
-  }
-  world.latchAllNeighbours();
-  return world;
-}
-
-// The smallest and largest grid coordinates (x + floor(z/2), y + floor(z/2), z) of the modules.
-std::pair<geometry::Cell, geometry::Cell> gridExtent(const world::World& world) {
-  geometry::Cell low{INT32_MAX, INT32_MAX, INT32_MAX}, high{INT32_MIN, INT32_MIN, INT32_MIN};
-  for (const world::Module& module : world.modules()) {
-    const int32_t shift = geometry::floorHalf(module.cell.z);
-    const geometry::Cell grid{module.cell.x + shift, module.cell.y + shift, module.cell.z};
-    low = {std::min(low.x, grid.x), std::min(low.y, grid.y), std::min(low.z, grid.z)};
-    high = {std::max(high.x, grid.x), std::max(high.y, grid.y), std::max(high.z, grid.z)};
-  }
-  return {low, high};
-}
-
-// VisibleSim opens only a file that declares its grid, which starts at 0,0,0. A scene written as
-// XML without one gets the smallest grid that holds its modules with room to move: two free cells
-// beyond them on the far sides and two free layers above. Cells below the grid's origin cannot be
-// written so; the refusal names one.
-void declareGridForVisibleSim(io::Scene& scene, const std::string& out) {
-  const auto format = io::sceneFormatOf(out);
-  if (scene.world.bounds().gridSize || scene.world.size() == 0 || !format.ok() ||
-      *format != io::SceneFormat::kVisibleSimXml) {
-    return;
-  }
-  const auto [low, high] = gridExtent(scene.world);
-  if (low.x < 0 || low.y < 0) {
-    for (const world::Module& module : scene.world.modules()) {
-      const int32_t shift = geometry::floorHalf(module.cell.z);
-      if (module.cell.x + shift < 0 || module.cell.y + shift < 0) {
-        throw UsageError(fmt::format(
-            "{}: VisibleSim's grid starts at 0,0,0, and module {} at {} lies before it (x + "
-            "floor(z/2) and y + floor(z/2) must not be negative; docs/coordinates.md); write JSON, "
-            "or move the scene",
-            out, module.id.value, geometry::toString(module.cell)));
-      }
-    }
-  }
-  constexpr int32_t kRoom = 2;
-  const geometry::Cell grid{high.x + 1 + kRoom, high.y + 1 + kRoom, high.z + 1 + kRoom};
-  scene.world = rebuilt(scene.world, world::Bounds{grid}, {0, 0, 0});
-  fmt::print(stderr, "declared grid {} in {}: VisibleSim needs one\n", geometry::toString(grid),
-             out);
-}
-
 void writeGenerated(world::World world, const std::string& name, const GenerateArguments& args) {
   std::vector<NamedPath> inputs;
   for (const std::string& file : args.targetFiles) inputs.push_back({"--target", file});
@@ -140,10 +84,11 @@ void writeGenerated(world::World world, const std::string& name, const GenerateA
   if (!args.targetBox.empty()) scene.targets.push_back(boxTarget(args));
   declareGridForVisibleSim(scene, args.out);
   check(io::writeScene(scene, args.out));
-  fmt::print(stderr, "wrote {} ({} modules{})\n", args.out, scene.world.size(),
-             scene.targets.empty() ? ""
-                                   : fmt::format(", {} target{}", scene.targets.size(),
-                                                 scene.targets.size() == 1 ? "" : "s"));
+  reportWritten(args.out, fmt::format("{} modules{}", scene.world.size(),
+                                      scene.targets.empty()
+                                          ? ""
+                                          : fmt::format(", {} target{}", scene.targets.size(),
+                                                        scene.targets.size() == 1 ? "" : "s")));
 }
 
 void addGenerate(CLI::App& app) {
@@ -172,7 +117,19 @@ void addGenerate(CLI::App& app) {
     options.origin = parseCell("--origin", box->origin);
     if (!box->grid.empty()) options.gridSize = parseCell("--grid", box->grid);
     const geometry::Cell size = parseCell("--size", box->size);
-    writeGenerated(unwrap(scene::box(size, options)), "box " + box->size, box->generate);
+    auto world = scene::box(size, options);
+    if (!world.ok() && options.gridSize && !options.upright && size.z > 1) {
+      // A box of several layers leans in the skew coordinates, by floor(z/2) cells on layer z:
+      // the grid it needs is wider than the box. Say so, and what would fit.
+      const int32_t lean = geometry::floorHalf(options.origin.z + size.z - 1);
+      const geometry::Cell needed{options.origin.x + size.x + lean,
+                                  options.origin.y + size.y + lean, options.origin.z + size.z};
+      throw UsageError(fmt::format(
+          "{}; a box of {} layers leans by floor(z/2) cells on layer z (docs/coordinates.md): "
+          "add --upright for one that stands straight, or give --grid {}",
+          world.error(), size.z, geometry::toString(needed)));
+    }
+    writeGenerated(unwrap(std::move(world)), "box " + box->size, box->generate);
   });
 
   struct ArchArguments {
@@ -244,6 +201,7 @@ void addConvert(CLI::App& app) {
     io::Scene scene = unwrap(io::readScene(args->in));
     declareGridForVisibleSim(scene, args->out);
     check(io::writeScene(scene, args->out));
+    reportWritten(args->out, fmt::format("{} modules", scene.world.size()));
   });
 }
 
@@ -363,6 +321,80 @@ void addSceneCommands(CLI::App& app) {
   addGenerate(app);
   addConvert(app);
   addInfo(app);
+}
+
+// The same modules (ids, orientations, colours, order) moved by `offset` into a world of `bounds`,
+// all neighbours latched.
+world::World rebuilt(const world::World& from, const world::Bounds& bounds,
+                     const geometry::Cell& offset) {
+  world::World world(bounds);
+  world.reserve(from.size());
+  for (world::Module module : from.modules()) {
+    module.cell = module.cell + offset;
+    check(world.add(module));
+  }
+  world.latchAllNeighbours();
+  return world;
+}
+
+// The smallest and largest grid coordinates (x + floor(z/2), y + floor(z/2), z) of the modules.
+std::pair<geometry::Cell, geometry::Cell> gridExtent(const world::World& world) {
+  geometry::Cell low{INT32_MAX, INT32_MAX, INT32_MAX}, high{INT32_MIN, INT32_MIN, INT32_MIN};
+  for (const world::Module& module : world.modules()) {
+    const int32_t shift = geometry::floorHalf(module.cell.z);
+    const geometry::Cell grid{module.cell.x + shift, module.cell.y + shift, module.cell.z};
+    low = {std::min(low.x, grid.x), std::min(low.y, grid.y), std::min(low.z, grid.z)};
+    high = {std::max(high.x, grid.x), std::max(high.y, grid.y), std::max(high.z, grid.z)};
+  }
+  return {low, high};
+}
+
+namespace {
+
+// The largest grid coordinates of the cells a scene's grid targets list, or `high` if larger: a
+// grid target's cells must fit the grid too (a CSG target's cells follow from the grid).
+geometry::Cell withGridTargets(const io::Scene& scene, geometry::Cell high) {
+  for (const target::Target& target : scene.targets) {
+    if (target.format() != target::Format::kGrid) continue;
+    for (const geometry::Cell& cell : unwrap(target.cells())) {
+      const int32_t shift = geometry::floorHalf(cell.z);
+      high = {std::max(high.x, cell.x + shift), std::max(high.y, cell.y + shift),
+              std::max(high.z, cell.z)};
+    }
+  }
+  return high;
+}
+
+}  // namespace
+
+// VisibleSim opens only a file that declares its grid, which starts at 0,0,0. A scene written as
+// XML without one gets the smallest grid that holds its modules with room to move: two free cells
+// beyond them on the far sides and two free layers above. Cells below the grid's origin cannot be
+// written so; the refusal names one.
+void declareGridForVisibleSim(io::Scene& scene, const std::string& out) {
+  const auto format = io::sceneFormatOf(out);
+  if (scene.world.bounds().gridSize || scene.world.size() == 0 || !format.ok() ||
+      *format != io::SceneFormat::kVisibleSimXml) {
+    return;
+  }
+  const auto [low, high] = gridExtent(scene.world);
+  if (low.x < 0 || low.y < 0) {
+    for (const world::Module& module : scene.world.modules()) {
+      const int32_t shift = geometry::floorHalf(module.cell.z);
+      if (module.cell.x + shift < 0 || module.cell.y + shift < 0) {
+        throw UsageError(fmt::format(
+            "{}: VisibleSim's grid starts at 0,0,0, and module {} at {} lies before it (x + "
+            "floor(z/2) and y + floor(z/2) must not be negative; docs/coordinates.md); write JSON, "
+            "or move the scene",
+            out, module.id.value, geometry::toString(module.cell)));
+      }
+    }
+  }
+  constexpr int32_t kRoom = 2;
+  const geometry::Cell far = withGridTargets(scene, high);
+  const geometry::Cell grid{far.x + 1 + kRoom, far.y + 1 + kRoom, far.z + 1 + kRoom};
+  scene.world = rebuilt(scene.world, world::Bounds{grid}, {0, 0, 0});
+  note(fmt::format("declared grid {} in {}: VisibleSim needs one", geometry::toString(grid), out));
 }
 
 }  // namespace datomsim::app

@@ -23,7 +23,8 @@ void addViewCommand(CLI::App& app) {
                    "Trace (datomsim run --trace) or scene file (.xml or .json)")
       ->required();
   command->add_option("-o,--out", args->out,
-                      "HTML file to write (default: the input with the extension .html)");
+                      "HTML file to write (default: the input's name with .html added, so that a "
+                      "scene and its trace, x.json and x.jsonl, give two pages)");
   command->add_option("--reach", args->reach,
                       "A distance map and path to show: the JSON of `datomsim reach --out`");
   command->add_option("--title", args->title,
@@ -40,7 +41,8 @@ void addViewCommand(CLI::App& app) {
     if (!args->title.empty()) page.title = args->title;
 
     std::filesystem::path out = args->out;
-    if (out.empty()) out = std::filesystem::path(input).replace_extension(".html");
+    // x.json.html, x.jsonl.html: a scene and its trace never write the same page.
+    if (out.empty()) out = std::filesystem::path(input.string() + ".html");
     std::error_code error;
     if (std::filesystem::equivalent(out, input, error)) {
       throw UsageError(
@@ -50,7 +52,7 @@ void addViewCommand(CLI::App& app) {
         args->viewerJs.empty() ? unwrap(exporting::executableDirectory()) : "";
     const std::string bundle = unwrap(exporting::loadViewerBundle(args->viewerJs, here));
     check(exporting::writeViewerPage(out, bundle, page));
-    fmt::print("wrote {}\n", out.string());
+    reportWritten(out.string());
   });
 }
 

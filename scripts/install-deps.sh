@@ -10,12 +10,15 @@ packages=(
   clang-format cmake-format
   # The fuzz harnesses (scripts/fuzz.sh): Clang and its libFuzzer and sanitizer runtimes.
   clang libclang-rt-dev
+  # Shell completion is tested in both shells it is made for (docs/shell-completion.md).
+  bash-completion zsh
 )
 # The browser viewer and its end-to-end test (docs/viewer.md).
 # Node.js may come from another source than Debian's packages (with its own npm): the commands
 # count, not the package names.
 if [[ "${DATOMSIM_SKIP_BROWSER:-0}" != 1 ]]; then
-  packages+=(chromium)
+  # chromium draws the viewer; ffmpeg encodes its frames into videos (datomsim video).
+  packages+=(chromium ffmpeg)
   if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
     packages+=(nodejs npm)
   fi

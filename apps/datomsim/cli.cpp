@@ -80,6 +80,7 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
   app::addDemoCommand(app);
   app::addViewCommand(app);
   app::addMeshCommand(app);
+  app::addCompletionCommand(app);
 
   // A first word that names no subcommand: say so, and which one was meant.
   const auto commands = app.get_subcommands({});

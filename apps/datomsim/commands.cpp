@@ -21,6 +21,10 @@ bool quietOutput = false;
 
 }  // namespace
 
+void addExample(CLI::App& command, const std::string& arguments) {
+  command.footer("\nExample:\n  datomsim " + arguments);
+}
+
 void setQuiet(bool quiet) {
   quietOutput = quiet;
 }

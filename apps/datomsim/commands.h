@@ -35,6 +35,12 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added = {});
 void addDemoCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addMeshCommand(CLI::App& app);
+// `completion bash|zsh`, from the whole command line `app` (add it last).
+void addCompletionCommand(CLI::App& app);
+
+// Ends a subcommand's --help with one example of its use, run from the repository's root (the
+// test CommandLine.EverySubcommandsHelpEndsWithAnExampleThatRuns runs each).
+void addExample(CLI::App& command, const std::string& arguments);
 
 // A check that ran and found a problem (e.g. counterexamples); exit status 1.
 class CheckFailed : public std::runtime_error {

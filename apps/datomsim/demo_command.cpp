@@ -35,6 +35,7 @@ void addDemoCommand(CLI::App& app) {
       "demo", "The paper's experiment on both arch scenes: distance maps, paths, traces, viewers");
   command->add_option("-o,--out", args->out, "Output folder (created if missing)")
       ->capture_default_str();
+  addExample(*command, "demo -o demo-output");
   command->callback([args] {
     const std::filesystem::path folder = args->out;
     std::error_code error;

@@ -34,6 +34,7 @@ void addGeometryCommand(CLI::App& app) {
                    "Also the joint angles (degrees) at this compression fraction, 0..1")
       ->check(kFinite & CLI::Range(0.0, 1.0));
   command->add_flag("--json", args->json, "Print one JSON object");
+  addExample(*command, "geometry --radius 1 --thickness 0.1 --fraction 0.5");
   command->callback([args] {
     const datom::Dimensions d = unwrap(datom::dimensionsFor(args->radius, args->thickness));
     nlohmann::ordered_json out = {

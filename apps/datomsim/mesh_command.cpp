@@ -36,6 +36,7 @@ void addMeshCommand(CLI::App& app) {
   command->add_option("--fraction", args->fraction,
                       "How far the piston is compressed: 0 (rest) .. 1 (default 1)");
   command->add_option("-o,--out", args->out, "Mesh file: .obj, .stl or .glb")->required();
+  addExample(*command, "mesh --radius 1 --thickness 0.1 --piston 4 --fraction 1 -o datom.glb");
   command->callback([args] {
     // The output's format first: a wrong extension is the cheapest mistake to report.
     unwrap(exporting::meshFormatOf(args->out));

@@ -64,6 +64,8 @@ void addReach(CLI::App& app) {
                    "or auto: paper while every distance is below 25")
       ->check(CLI::IsMember({"auto", "paper", "continuous"}))
       ->capture_default_str();
+  addExample(*command,
+             "reach scenes/paper-arch-hole1.json --goal 6,5,2 --start 0,0,2 --png arch1.png");
   command->callback([args] {
     const PictureRequest& pictures = args->pictures;
     // Pictures are files (never standard output): only --out may be "-".
@@ -140,6 +142,7 @@ void addMoves(CLI::App& app) {
       ->check(CLI::IsMember({"auto", "table", "json"}))
       ->capture_default_str();
   addOutputOption(*command, args->out);
+  addExample(*command, "moves scenes/paper-arch-hole1.json --at 2,2,3");
   command->callback([args] {
     refuseClashes({{"scene", args->scene}}, {{"--out", args->out}});
     const geometry::Cell at = parseCell("--at", args->at);
@@ -176,6 +179,7 @@ void addVerify(CLI::App& app) {
   command->add_option("--attachment", args->attachment, "Attachment settings to check")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  addExample(*command, "verify scenes/paper-arch-hole1.json");
   command->callback([args] {
     const io::Scene scene = unwrap(io::readScene(args->scene));
     const motion::RuleTable table;

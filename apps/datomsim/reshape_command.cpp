@@ -75,6 +75,7 @@ void addReshapeGenerator(CLI::App& generate) {
   command->add_option("--side", args->side, "pyramid: the floor's side")->capture_default_str();
   command->add_option("--base", args->base, "pyramid: the pyramid's base (default: side / 8)")
       ->check(CLI::Range(1, 10000));
+  addExample(*command, "generate reshape heap -o heap.json");
   command->callback([args] {
     const std::string& kase = args->kase;
     auto floorSize = [&] {

@@ -199,6 +199,9 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
   command->add_flag("--stats", args->stats,
                     "Print the run's statistics (events by kind, messages by type, motions, "
                     "deformations, simulated and wall time) on standard error");
+  addExample(*command,
+             "run scenes/paper-arch-hole1.json --program follow-gradient --goal 6,5,2 --start "
+             "0,0,2 --trace arch1.jsonl");
   command->callback([args, command, added] {
     std::vector<NamedPath> outputs = {{"--out", args->out}};
     if (!args->trace.empty()) outputs.push_back({"--trace", args->trace});

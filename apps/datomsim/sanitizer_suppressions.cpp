@@ -7,3 +7,9 @@
 extern "C" __attribute__((visibility("default"))) const char* __lsan_default_suppressions() {
   return "leak:libfontconfig.so\n";
 }
+
+// Quiet about the suppressions it used: --quiet promises an empty standard error, and the list
+// would be printed at every exit that drew text.
+extern "C" __attribute__((visibility("default"))) const char* __lsan_default_options() {
+  return "print_suppressions=0";
+}

@@ -95,6 +95,7 @@ void addGenerate(CLI::App& app) {
   CLI::App* generate =
       app.add_subcommand("generate", "Make a scene: box, arch, random, or a reshape case");
   generate->require_subcommand(1);
+  addExample(*generate, "generate box --size 6,5,2 -o box.json");
   addReshapeGenerator(*generate);
 
   struct BoxArguments {
@@ -111,6 +112,7 @@ void addGenerate(CLI::App& app) {
                        "Stand straight up instead of leaning with the skew coordinates: each "
                        "layer's x and y less floor(z/2) (docs/coordinates.md); fills a grid of "
                        "its own size");
+  addExample(*boxCommand, "generate box --size 10,10,4 --upright -o tall.json");
   boxCommand->callback([box] {
     scene::BoxOptions options;
     options.upright = box->upright;
@@ -143,6 +145,7 @@ void addGenerate(CLI::App& app) {
   archCommand->add_option("--hole", arch->hole, "Height of the arch's hole: 2 or 1")
       ->check(CLI::IsMember({1, 2}))
       ->capture_default_str();
+  addExample(*archCommand, "generate arch --hole 1 -o arch1.json");
   archCommand->callback([arch] {
     writeGenerated(unwrap(scene::paperArch(arch->hole)),
                    fmt::format("paper arch, hole {} high", arch->hole), arch->generate);
@@ -170,6 +173,7 @@ void addGenerate(CLI::App& app) {
       ->capture_default_str();
   randomCommand->add_flag("--random-orientations", random->orientations,
                           "Draw each module's orientation");
+  addExample(*randomCommand, "generate random --count 100 --seed 7 --grid 12,12,6 -o random.json");
   randomCommand->callback([random] {
     scene::RandomOptions options;
     if (!random->grid.empty()) options.gridSize = parseCell("--grid", random->grid);
@@ -196,6 +200,7 @@ void addConvert(CLI::App& app) {
       app.add_subcommand("convert", "Convert a scene between VisibleSim XML and JSON");
   command->add_option("scene", args->in, "Scene file to read (.xml or .json)")->required();
   command->add_option("-o,--out", args->out, "Scene file to write (.xml or .json)")->required();
+  addExample(*command, "convert scenes/paper-arch-hole1.json -o arch1.xml");
   command->callback([args] {
     refuseClashes({{"scene", args->in}}, {{"--out", args->out}});
     io::Scene scene = unwrap(io::readScene(args->in));
@@ -263,6 +268,7 @@ void addInfo(CLI::App& app) {
       "info", "Module count, bounds, connected components and targets of a scene");
   command->add_option("scene", args->scene, "Scene file (.xml or .json)")->required();
   command->add_flag("--json", args->json, "Print one JSON object");
+  addExample(*command, "info scenes/reshape-heap.json");
   command->callback([args] {
     const io::Scene scene = unwrap(io::readScene(args->scene));
     const world::World& world = scene.world;

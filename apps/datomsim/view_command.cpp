@@ -31,6 +31,7 @@ void addViewCommand(CLI::App& app) {
                       "Title of the page (default: the trace's description)");
   command->add_option("--viewer-js", args->viewerJs,
                       "The viewer script to inline (default: viewer.bundle.js next to the binary)");
+  addExample(*command, "view scenes/walkers.json -o walkers.html");
   command->callback([args] {
     const std::filesystem::path input = args->input;
     exporting::ViewerPage page = unwrap(exporting::pageForFile(input));

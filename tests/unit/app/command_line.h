@@ -17,8 +17,9 @@ struct Outcome {
   std::string output;  // standard output and standard error together
 };
 
-inline Outcome datomsim(const std::string& arguments) {
-  const std::string command = std::string(DATOMSIM_BINARY) + " " + arguments + " 2>&1";
+// Runs one line through the shell (/bin/sh), as a user types it.
+inline Outcome shell(const std::string& line) {
+  const std::string command = line + " 2>&1";
   Outcome outcome;
   FILE* pipe = ::popen(command.c_str(), "r");
   std::array<char, 4096> buffer{};
@@ -29,6 +30,10 @@ inline Outcome datomsim(const std::string& arguments) {
   const int status = ::pclose(pipe);
   outcome.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return outcome;
+}
+
+inline Outcome datomsim(const std::string& arguments) {
+  return shell(std::string(DATOMSIM_BINARY) + " " + arguments);
 }
 
 class CommandLine : public ::testing::Test {

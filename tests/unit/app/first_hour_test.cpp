@@ -1,12 +1,16 @@
 // A researcher's first hour with the command line: every file a command writes is named on
 // standard error (and nothing with --quiet), pages of a scene and of its trace do not overwrite
 // each other, tall boxes stand upright when asked and say why they lean otherwise, and every
-// scene written as XML declares the grid VisibleSim needs to open it.
+// scene written as XML declares the grid VisibleSim needs to open it; every subcommand's help ends
+// with an example that runs, and the shell completion knows the subcommands, options and choices.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,6 +36,29 @@ std::vector<std::string> wroteLines(const std::string& output) {
     start = end + 1;
   }
   return files;
+}
+
+// The subcommands listed under "Subcommands:" in a help text.
+std::vector<std::string> subcommandsIn(const std::string& help) {
+  std::vector<std::string> names;
+  const size_t list = help.find("Subcommands:\n");
+  if (list == std::string::npos) return names;
+  static const std::regex kName(R"(^  ([a-z][a-z-]*) )");
+  std::istringstream lines(help.substr(list + 13));
+  for (std::string line; std::getline(lines, line) && !line.empty();) {
+    std::smatch name;
+    if (std::regex_search(line, name, kName)) names.push_back(name[1]);
+  }
+  return names;
+}
+
+// Every subcommand, as the words that reach it ("generate box"), from the help texts down.
+void everySubcommand(const std::string& path, std::vector<std::string>& into) {
+  for (const std::string& name : subcommandsIn(datomsim(path + " --help").output)) {
+    const std::string sub = path.empty() ? name : path + " " + name;
+    into.push_back(sub);
+    everySubcommand(sub, into);
+  }
 }
 
 TEST_F(CommandLine, EveryFileACommandWritesIsNamedAndQuietSaysNothing) {
@@ -167,6 +194,97 @@ TEST_F(CommandLine, EverySceneWrittenAsXmlDeclaresTheGridVisibleSimNeeds) {
   EXPECT_EQ(before["modules"], after["modules"]);
   EXPECT_TRUE(before["grid"].is_null());
   EXPECT_TRUE(after["grid"].is_array());
+}
+
+TEST_F(CommandLine, EverySubcommandsHelpEndsWithAnExampleThatRuns) {
+  std::vector<std::string> subcommands;
+  everySubcommand("", subcommands);
+  ASSERT_GE(subcommands.size(), 15u);  // twelve commands, generate's four kinds at least
+  // The examples name the repository's scenes as from its root.
+  std::filesystem::create_directory_symlink(std::filesystem::path(DATOMSIM_SOURCE_DIR) / "scenes",
+                                            path("scenes"));
+  static const std::regex kExample(R"(\nExample:\n  datomsim ([^\n]+)\n)");
+  for (const std::string& subcommand : subcommands) {
+    const Outcome help = datomsim(subcommand + " --help");
+    ASSERT_EQ(help.status, 0) << subcommand << "\n" << help.output;
+    std::smatch example;
+    ASSERT_TRUE(std::regex_search(help.output, example, kExample))
+        << subcommand << " --help has no example:\n"
+        << help.output;
+    std::string arguments = example[1];
+    // A redirection into the user's home goes to the test's folder instead.
+    if (const size_t into = arguments.find(" > "); into != std::string::npos) {
+      arguments = arguments.substr(0, into) + " > " + path("redirected");
+    }
+    const Outcome ran =
+        shell("cd " + directory_.path().string() + " && " + DATOMSIM_BINARY + " " + arguments);
+    EXPECT_EQ(ran.status, 0) << "datomsim " << arguments << "\n" << ran.output;
+  }
+}
+
+// What the completion offers after `words`, the last one being completed, in bash or zsh.
+std::vector<std::string> completions(const std::string& shellName,
+                                     const std::vector<std::string>& words,
+                                     const std::string& directory) {
+  std::string array;
+  for (const std::string& word : words) array += " '" + word + "'";
+  // zsh runs bash's completion with ksharrays (arrays from 0), as its bashcompinit does.
+  const std::string setup = shellName == "zsh" ? "setopt ksharrays; " : "";
+  const std::string script =
+      "cd " + directory + " && . ./completion." + shellName + " && " + setup +
+      "COMP_WORDS=(datomsim" + array + ") && COMP_CWORD=" + std::to_string(words.size()) +
+      " && { _datomsim; true; } && " + "for word in \"${COMPREPLY[@]}\"; do echo \"$word\"; done";
+  // HOME is the test's folder: zsh's compinit writes its cache there.
+  const Outcome outcome = shell("HOME=" + directory + " " + shellName + " -c '" +
+                                std::regex_replace(script, std::regex("'"), "'\\''") + "'");
+  EXPECT_EQ(outcome.status, 0) << shellName << ": " << outcome.output;
+  std::vector<std::string> offered;
+  std::istringstream lines(outcome.output);
+  for (std::string line; std::getline(lines, line);) offered.push_back(line);
+  return offered;
+}
+
+bool offers(const std::vector<std::string>& offered, const std::string& word) {
+  return std::find(offered.begin(), offered.end(), word) != offered.end();
+}
+
+TEST_F(CommandLine, BashCompletionOffersSubcommandsOptionsAndChoices) {
+  const std::string dir = directory_.path().string();
+  ASSERT_EQ(datomsim("completion bash > " + path("completion.bash")).status, 0);
+  EXPECT_EQ(completions("bash", {"ge"}, dir), (std::vector<std::string>{"geometry", "generate"}));
+  EXPECT_EQ(completions("bash", {"generate", "b"}, dir), std::vector<std::string>{"box"});
+  // Options of the subcommand typed, not of another; options' values are skipped on the way.
+  EXPECT_EQ(completions("bash", {"run", "x.json", "--pro"}, dir),
+            std::vector<std::string>{"--program"});
+  EXPECT_EQ(completions("bash", {"run", "x.json", "--goal", "1,2,3", "--sta"}, dir),
+            (std::vector<std::string>{"--start", "--stats"}));
+  EXPECT_TRUE(completions("bash", {"reach", "x.json", "--pro"}, dir).empty());
+  // A choice among a list: the list, every program of this build included.
+  EXPECT_EQ(completions("bash", {"run", "x.json", "--program", "f"}, dir),
+            (std::vector<std::string>{"follow-gradient", "flood"}));
+  EXPECT_EQ(completions("bash", {"reach", "x.json", "--palette", ""}, dir),
+            (std::vector<std::string>{"auto", "paper", "continuous"}));
+  // Elsewhere, files.
+  std::ofstream(path("scene-to-complete.json")) << "{}";
+  EXPECT_EQ(completions("bash", {"info", "scene-to"}, dir),
+            std::vector<std::string>{"scene-to-complete.json"});
+}
+
+TEST_F(CommandLine, ZshCompletionLoadsAndOffersTheSameWords) {
+  const std::string dir = directory_.path().string();
+  ASSERT_EQ(datomsim("completion zsh > " + path("completion.zsh")).status, 0);
+  // The script registers itself with zsh's completion system.
+  const Outcome registered = shell("cd " + dir + " && HOME=" + dir +
+                                   " zsh -c '. ./completion.zsh && "
+                                   "print -r -- $_comps[datomsim]'");
+  EXPECT_EQ(registered.status, 0) << registered.output;
+  EXPECT_NE(registered.output.find("_bash_complete"), std::string::npos) << registered.output;
+  // zsh's compgen leaves the matching of the word typed to zsh: it offers every candidate.
+  const std::vector<std::string> generate = completions("zsh", {"generate", "b"}, dir);
+  EXPECT_TRUE(offers(generate, "box") && offers(generate, "arch") && offers(generate, "reshape"));
+  EXPECT_FALSE(offers(generate, "geometry"));
+  EXPECT_EQ(completions("zsh", {"reach", "x.json", "--palette", ""}, dir),
+            (std::vector<std::string>{"auto", "paper", "continuous"}));
 }
 
 }  // namespace

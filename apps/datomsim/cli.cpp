@@ -79,6 +79,7 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
   app::addRunCommand(app, programs);
   app::addDemoCommand(app);
   app::addViewCommand(app);
+  app::addVideoCommand(app);
   app::addMeshCommand(app);
   app::addCompletionCommand(app);
 

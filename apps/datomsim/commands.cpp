@@ -29,6 +29,10 @@ void setQuiet(bool quiet) {
   quietOutput = quiet;
 }
 
+bool quiet() {
+  return quietOutput;
+}
+
 void reportWritten(const std::string& path, std::string_view holds) {
   if (quietOutput) return;
   if (holds.empty()) {

@@ -21,6 +21,7 @@
 #include "geometry/cell.h"
 #include "io/scene.h"
 #include "motion/reach.h"
+#include "video/recorder.h"
 #include "world/world.h"
 
 namespace datomsim::app {
@@ -35,6 +36,12 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added = {});
 void addDemoCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addMeshCommand(CLI::App& app);
+void addVideoCommand(CLI::App& app);
+
+// For `video` and `demo`: a count of frames on standard error when it is a terminal (none with
+// --quiet or in a log), and what a video holds for its "wrote" line.
+std::function<void(int, int)> videoProgress(const std::string& name);
+std::string describeVideo(const video::VideoSummary& made, const video::VideoRequest& request);
 // `completion bash|zsh`, from the whole command line `app` (add it last).
 void addCompletionCommand(CLI::App& app);
 
@@ -68,6 +75,7 @@ Status writeRunJson(const algorithms::ProgramInfo& program, const experiment::Ru
 // that helps; and notes, such as a picture drawn smaller than asked. `datomsim --quiet`
 // silences both; errors and warnings of failure are always said.
 void setQuiet(bool quiet);
+bool quiet();
 void reportWritten(const std::string& path, std::string_view holds = {});
 void note(std::string_view line);
 

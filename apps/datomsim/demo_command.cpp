@@ -14,6 +14,7 @@
 #include "render/distance_map.h"
 #include "scene/paper_arch.h"
 #include "scene/reshape.h"
+#include "video/recorder.h"
 
 namespace datomsim::app {
 namespace {
@@ -29,12 +30,16 @@ nlohmann::ordered_json cellsJson(const std::vector<geometry::Cell>& cells) {
 void addDemoCommand(CLI::App& app) {
   struct Arguments {
     std::string out = "datomsim-demo";
+    bool noVideo = false;
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand(
       "demo", "The paper's experiment on both arch scenes: distance maps, paths, traces, viewers");
   command->add_option("-o,--out", args->out, "Output folder (created if missing)")
       ->capture_default_str();
+  command->add_flag("--no-video", args->noVideo,
+                    "Skip the videos of the two paper runs (about a minute and a half of drawing "
+                    "in headless Chromium)");
   addExample(*command, "demo -o demo-output");
   command->callback([args] {
     const std::filesystem::path folder = args->out;
@@ -56,6 +61,8 @@ void addDemoCommand(CLI::App& app) {
     summary["rules"] = "paper";
     summary["attachment"] = "on";
     nlohmann::ordered_json scenes = nlohmann::ordered_json::array();
+    // The viewer pages of the paper's runs, recorded into videos once everything else is written.
+    std::vector<std::pair<std::filesystem::path, exporting::ViewerPage>> videos;
     for (const experiment::PaperScene& result : experiment.scenes) {
       const std::string name = fmt::format("arch-hole{}", result.holeHeight);
       const std::string title =
@@ -70,11 +77,12 @@ void addDemoCommand(CLI::App& app) {
       writeOutput((folder / (name + "-run.json")).string(),
                   runJson(*algorithms::programInfo(algorithms::kFollowGradient), result.run));
       if (bundle.ok()) {
-        check(exporting::writeViewerPage(
-            folder / (name + "-viewer.html"), *bundle,
-            {title, result.run.trace,
-             exporting::overlayJson(result.distances.sorted(), result.path, scene::kPaperGoal)}));
+        const exporting::ViewerPage page = {
+            title, result.run.trace,
+            exporting::overlayJson(result.distances.sorted(), result.path, scene::kPaperGoal)};
+        check(exporting::writeViewerPage(folder / (name + "-viewer.html"), *bundle, page));
         reportWritten((folder / (name + "-viewer.html")).string());
+        videos.emplace_back(folder / (name + "-run.mp4"), page);
       }
 
       nlohmann::ordered_json entry;
@@ -129,6 +137,26 @@ void addDemoCommand(CLI::App& app) {
     arch["speed_up"] = makespan > 0 ? baseline / makespan : 0.0;
     summary["arch_build"] = std::move(arch);
     writeOutput((folder / "summary.json").string(), summary.dump(2) + "\n");
+
+    // Short videos of the paper's runs, small so that they are quick to draw: 640x360, 12 frames
+    // a second, at most 15 s. Without Chromium or ffmpeg the demo says so and does without.
+    if (args->noVideo) videos.clear();
+    if (const Status tools = video::findVideoTools({}); !videos.empty() && !tools.ok()) {
+      note("no videos: " + tools.error());
+      videos.clear();
+    }
+    for (const auto& [file, page] : videos) {
+      video::VideoRequest recording;
+      recording.out = file;
+      recording.pageHtml = unwrap(exporting::viewerHtml(*bundle, page));
+      recording.width = 640;
+      recording.height = 360;
+      recording.fps = 12;
+      recording.longest = 15;
+      recording.progress = videoProgress(file.filename().string());
+      const video::VideoSummary made = unwrap(video::recordVideo(recording));
+      reportWritten(file.string(), describeVideo(made, recording));
+    }
     fmt::print("The paper's experiment, files in {}/:\n", args->out);
     for (const experiment::PaperScene& result : experiment.scenes) {
       fmt::print("  arch hole {} high: {} reachable cells, path of {} motions {} the arch\n",

@@ -14,7 +14,8 @@
 // maximum is the run's max_concurrent_motions, at a time of many motions in flight as many module
 // bodies are away from their cells, playing to a time and seeking to it give the same picture.
 // On the same run with target shapes added to its header: the target cells are drawn and counted.
-// On the demo's self-reconfiguration (the arch built from a layer on its box): the target is
+// With a distance map: its legend, captions that hide no module seen from the top, and an address
+// that names the moment shown and opens there. On the demo's self-reconfiguration (the arch built from a layer on its box): the target is
 // partly filled at the start and filled at the end, and its busiest time shows that many motions.
 // Screenshots go to DIR (default /tmp/viewer-shots). Ends with "N passed, M failed".
 import { execFileSync } from 'node:child_process';
@@ -82,7 +83,7 @@ function makePages(scratch) {
   const bundle = viewerBundle(scratch);
   const view = (...args) => run('view', ...args, '--viewer-js', bundle);
   const demo = join(scratch, 'demo');
-  run('demo', '-o', demo);
+  run('demo', '-o', demo, '--no-video');
   const pages = [];
   for (const hole of [2, 1]) {
     const name = `arch-hole${hole}`;
@@ -91,7 +92,7 @@ function makePages(scratch) {
     run('reach', scene, '--goal', GOAL.join(','), '--start', START.join(','), '--out', reach);
     const file = join(scratch, `${name}.html`);
     view(join(demo, `${name}-trace.jsonl`), '--reach', reach, '-o', file);
-    pages.push({ name, file, run: true, overlay: true });
+    pages.push({ name, file, run: true, overlay: JSON.parse(readFileSync(reach, 'utf8')) });
   }
   // The demo's self-reconfiguration: the arch built from a layer of modules on its box.
   const buildFile = join(scratch, 'arch-build.html');
@@ -101,7 +102,7 @@ function makePages(scratch) {
 
   const sceneFile = join(scratch, 'scene-hole1.html');
   view(join(repository, 'scenes', 'paper-arch-hole1.json'), '-o', sceneFile);
-  pages.push({ name: 'scene-hole1', file: sceneFile, run: false, overlay: false });
+  pages.push({ name: 'scene-hole1', file: sceneFile, run: false, overlay: null });
 
   // Walkers: the floor, 10 modules on top, all walking at once.
   const floor = join(scratch, 'floor.json');
@@ -312,6 +313,58 @@ async function testPage(context, spec) {
         assert(stats.colours > 500, 'blank distance map');
         await page.evaluate(`${api}.fit()`);
         await shoot(page, `${name}-distances-3d`);
+      });
+
+      await check(`${name}: a legend gives the distance colours and the path`, async () => {
+        const legend = await page.evaluate(`${api}.distanceLegend()`);
+        const maximum = Math.max(...spec.overlay.distances.map((d) => d[3]));
+        const labels = [...Array(Math.min(maximum, 9) + 1).keys()].join(' ');
+        const ramp = maximum >= 10 ? ` 10\u2013${maximum}` : '';
+        const expected = `motions to the goal: ${labels}${ramp} path, ${spec.overlay.path.length - 1} motions`;
+        assert(legend === expected, `legend "${legend}", not "${expected}"`);
+        await page.evaluate(`${api}.setOverlay(false)`);
+        assert((await page.evaluate(`${api}.distanceLegend()`)) === null, 'the legend stays without the map');
+        await page.evaluate(`${api}.setOverlay(true)`);
+      });
+
+      await check(`${name}: seen from the top, the captions hide no module`, async () => {
+        for (const [width, height] of [[1280, 800], [900, 560], [700, 700]]) {
+          await page.setViewportSize({ width, height });
+          // The longest note of the run is on screen: its captions are the tallest.
+          await page.evaluate(`${api}.seek(${duration * 0.5}); ${api}.fit('top')`);
+          await settle(page);
+          const hidden = await page.evaluate(() => {
+            const v = window.datomsimViewer;
+            const box = document.querySelector('.dv-top').getBoundingClientRect();
+            return v
+              .modules()
+              .filter((m) => {
+                const p = v.screenPositionOf(m.id);
+                return p.x >= box.left && p.x <= box.right && p.y >= box.top && p.y <= box.bottom + 12;
+              })
+              .map((m) => m.id);
+          });
+          assert(hidden.length === 0, `at ${width}x${height} the captions cover modules ${hidden.join(', ')}`);
+        }
+        await shoot(page, `${name}-top-captions`);
+        await page.setViewportSize({ width: 1280, height: 800 });
+        await page.evaluate(`${api}.fit()`);
+      });
+
+      await check(`${name}: the address names the moment shown, and opens there`, async () => {
+        await page.evaluate(`${api}.seek(4.5); ${api}.fit('top'); ${api}.selectId(1)`);
+        const fragment = await page.evaluate(`${api}.fragment()`);
+        assert(fragment === '#t=4.5&view=top&select=1', `the address says ${fragment}`);
+        const other = await context.newPage();
+        await other.goto(`${pathToFileURL(spec.file).href}#t=7.25&view=top&select=1`);
+        await other.waitForFunction(() => window.datomsimViewer && window.datomsimViewer.ready);
+        const opened = await other.evaluate(() => [window.datomsimViewer.time(), window.datomsimViewer.selectedInfo()]);
+        assert(opened[0] === 7.25, `opened at ${opened[0]} s, not 7.25 s`);
+        assert(opened[1] && /Datom 1/.test(opened[1]), 'the module of the link is not selected');
+        await other.evaluate(() => { window.location.hash = '#t=2&view=3d'; });
+        await other.waitForFunction(() => window.datomsimViewer.time() === 2);
+        await other.close();
+        await page.evaluate(`${api}.selectId(-1); ${api}.fit()`);
       });
     }
 

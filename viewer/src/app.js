@@ -2,8 +2,9 @@
 //
 // Playback only maps wall-clock time to trace time (times the speed); each picture is
 // timeline.frameAt(t), so the speed, pauses and seeks never change what is shown at a given t.
-import { PART_SCHEMES, TARGET_EMPTY, TARGET_FILLED, rgbToCss } from './colors.js';
+import { PART_SCHEMES, PATH_COLOR, TARGET_EMPTY, TARGET_FILLED, distanceLegend, rgbToCss } from './colors.js';
 import { formatSeconds } from './format.js';
+import { formatFragment, parseFragment } from './fragment.js';
 import { Kinematics } from './kinematics.js';
 import { ConcurrencyStrip } from './strip.js';
 import { Timeline } from './timeline.js';
@@ -85,14 +86,24 @@ export class App {
     this.speed = 1;
     this.playing = false;
     this.lastWall = null;
+    this.overlay = overlay;
+    // The moment and view the URL names (fragment.js); video mode hides the controls.
+    const opening = parseFragment(window.location.hash);
+    this.videoMode = Boolean(opening.video);
+    this.viewName = '3d';
+    if (this.videoMode) root.classList.add('dv-video');
+
+    this.shadows = opening.shadows ?? true;
 
     this.buildDom();
-    this.view = new View3D(this.canvasHolder, this.timeline, this.kinematics, overlay);
+    this.view = new View3D(this.canvasHolder, this.timeline, this.kinematics, overlay, { shadows: this.shadows });
     this.view.setOverlayVisible(true);
     this.overlayToggle.wrapper.hidden = !overlay;
     if (this.strip) this.strip.draw();
     this.installInput();
     this.seek(0);
+    this.applyFragment(opening);
+    window.addEventListener('hashchange', () => this.applyFragment(parseFragment(window.location.hash)));
     this.tick = this.tick.bind(this);
     requestAnimationFrame(this.tick);
   }
@@ -116,13 +127,19 @@ export class App {
     filled.style.background = rgbToCss(TARGET_FILLED);
     this.targetLine = element('div', { className: 'dv-target' }, [empty, this.targetText, filled, this.filledText]);
     this.targetLine.hidden = this.targets.length === 0;
+    this.distanceLine = this.buildDistanceLegend();
+    // Video mode has no time slider: the time is a caption, to a tenth of a second.
+    this.clockLine = element('div', { className: 'dv-clock' });
+    this.clockLine.hidden = !this.videoMode || this.duration <= 0;
     this.top = element('div', { className: 'dv-top' }, [
       element('div', { className: 'dv-title', text: title }),
+      this.clockLine,
       element('div', {
         className: 'dv-subtitle',
         text: `${header.modules.length} modules, r = ${header.dimensions.r}, t = ${header.dimensions.t ?? 0}` +
           (this.duration > 0 ? `, ${formatTime(this.duration)}` : ', scene (no changes)'),
       }),
+      this.distanceLine,
       this.targetLine,
       this.motionLine,
       this.noteLine,
@@ -174,14 +191,8 @@ export class App {
     }
     this.motionLine.hidden = !this.strip;
 
-    this.labelsToggle = checkbox('labels', false, (on) => {
-      this.view.setLabelsVisible(on);
-      this.view.render();
-    });
-    this.overlayToggle = checkbox('distances', true, (on) => {
-      this.view.setOverlayVisible(on);
-      this.view.render();
-    });
+    this.labelsToggle = checkbox('labels', false, (on) => this.setLabelsVisible(on));
+    this.overlayToggle = checkbox('distances', true, (on) => this.setOverlayVisible(on));
     this.focusToggle = checkbox('focus', false, (on) => {
       this.view.focus = on;
       this.redraw();
@@ -234,8 +245,8 @@ export class App {
         this.latchesToggle.wrapper,
         this.focusToggle.wrapper,
         this.schemeSelect,
-        button('fit', 'Fit the scene (F)', () => this.view.fit()),
-        button('top', 'Seen from the top, as the paper\'s distance maps (T)', () => this.view.fit('top')),
+        button('fit', 'Fit the scene (F)', () => this.fit('3d')),
+        button('top', 'Seen from the top, as the paper\'s distance maps (T)', () => this.fit('top')),
       ]),
     ]);
 
@@ -287,17 +298,15 @@ export class App {
           break;
         case 'f':
         case 'F':
-          this.view.fit();
+          this.fit('3d');
           return;
         case 't':
         case 'T':
-          this.view.fit('top');
+          this.fit('top');
           return;
         case 'l':
         case 'L':
-          this.labelsToggle.input.checked = !this.labelsToggle.input.checked;
-          this.view.setLabelsVisible(this.labelsToggle.input.checked);
-          this.view.render();
+          this.setLabelsVisible(!this.labelsToggle.input.checked);
           return;
         case 'x':
         case 'X':
@@ -321,6 +330,118 @@ export class App {
   seek(t) {
     this.time = Math.min(this.duration, Math.max(0, t));
     this.redraw();
+    if (!this.playing) this.updateFragment();
+  }
+
+  // "motions to the goal: [0] [1] ... [9] [10-31]  [path]": the colours of the distance cubes,
+  // shown while they are.
+  buildDistanceLegend() {
+    const line = element('div', { className: 'dv-distances' });
+    const distances = this.overlay?.distances ?? [];
+    const path = this.overlay?.path ?? [];
+    line.hidden = distances.length === 0 && path.length === 0;
+    if (line.hidden) return line;
+    if (distances.length > 0) {
+      const max = distances.reduce((m, d) => Math.max(m, d[3]), 0);
+      line.append(element('span', { text: 'motions to the goal:' }));
+      for (const entry of distanceLegend(max)) {
+        const swatch = element('span', { className: 'dv-distance', text: entry.label, title: entry.title });
+        swatch.style.background = entry.background;
+        swatch.style.color = entry.dark ? '#fff' : '#1d2430';
+        line.append(swatch);
+      }
+    }
+    if (path.length > 0) {
+      const swatch = element('span', { className: 'dv-path-swatch' });
+      swatch.style.background = rgbToCss(PATH_COLOR);
+      line.append(element('span', { className: 'dv-path' }, [swatch, document.createTextNode(`path, ${path.length - 1} motions`)]));
+    }
+    return line;
+  }
+
+  setOverlayVisible(on) {
+    this.overlayToggle.input.checked = on;
+    this.view.setOverlayVisible(on);
+    this.distanceLine.hidden = !on || !this.overlay;
+    this.view.render();
+  }
+
+  setLabelsVisible(on) {
+    this.labelsToggle.input.checked = on;
+    this.view.setLabelsVisible(on);
+    this.view.render();
+    this.updateFragment();
+  }
+
+  // Frames the scene from the front ('3d') or the top, clear of the captions at the top.
+  fit(view = '3d') {
+    this.viewName = view === 'top' ? 'top' : '3d';
+    const captions = this.top.offsetTop + this.top.offsetHeight + 8;
+    this.view.fit(this.viewName === 'top' ? 'top' : 'front', { reservedTop: captions });
+    this.updateFragment();
+  }
+
+  // Opens at what a URL fragment names; what it does not name stays as it is.
+  applyFragment(settings) {
+    if (settings.labels !== undefined) this.setLabelsVisible(settings.labels);
+    if (settings.select !== undefined) this.select(this.timeline.indexOfId.get(settings.select) ?? -1);
+    this.fit(settings.view ?? this.viewName);
+    if (settings.t !== undefined) this.pauseAndSeek(settings.t);
+  }
+
+  // The address bar names the moment shown (without a new history entry), so that a link to the
+  // page opens there; not while playing.
+  updateFragment() {
+    if (this.playing || !this.view) return;
+    const index = this.selectedIndex ?? -1;
+    const fragment = formatFragment({
+      t: this.time,
+      view: this.viewName,
+      select: index >= 0 ? this.trace.header.modules[index].id : null,
+      labels: this.labelsToggle.input.checked,
+      shadows: this.shadows,
+      video: this.videoMode,
+    });
+    if (window.location.hash !== fragment) window.history.replaceState(null, '', fragment);
+  }
+
+  // A scene's video turns the camera around the scene, `degrees` from the fitted view, about the
+  // vertical axis through the point it looks at. Every angle is a picture of its own.
+  videoTurn(degrees) {
+    const camera = this.view.camera;
+    const target = this.view.controls.target;
+    if (!this.turnStart) this.turnStart = camera.position.clone().sub(target);
+    const angle = (degrees * Math.PI) / 180;
+    const [x, y] = [this.turnStart.x, this.turnStart.y];
+    camera.position.set(
+      target.x + x * Math.cos(angle) - y * Math.sin(angle),
+      target.y + x * Math.sin(angle) + y * Math.cos(angle),
+      target.z + this.turnStart.z,
+    );
+    this.view.controls.update();
+    this.view.render();
+    return `turn=${degrees}`;
+  }
+
+  // Shows trace time t and names the picture: frames with the same name look the same (nothing
+  // turns or strokes, the same changes applied, the same captions), so a video encodes it once
+  // and the page does not draw it again (drawing is what a software renderer spends its time on).
+  videoFrame(t) {
+    const time = Math.min(this.duration, Math.max(0, t));
+    const frame = this.timeline.frameAt(time);
+    const stroking = (fraction) => fraction > 0 && fraction < 1;
+    const animating = frame.modules.some(
+      (m) => m.moving || stroking(m.fraction) || m.otherPistons.some((o) => stroking(o.fraction)),
+    );
+    const captions = [
+      time.toFixed(1),
+      frame.motions.map((m) => m.m).join(','),
+      frame.note ? `${frame.note.t}:${frame.note.text}` : '',
+    ];
+    const key = animating ? `t=${time}` : `${frame.applied}|${captions.join('|')}`;
+    if (key !== this.lastVideoKey) this.pauseAndSeek(time);
+    this.lastVideoKey = key;
+    return key;
   }
 
   redraw() {
@@ -330,6 +451,7 @@ export class App {
     this.view.render();
     this.slider.value = String(this.time);
     this.timeLabel.textContent = `${formatTime(this.time)} / ${formatTime(this.duration)}`;
+    this.clockLine.textContent = `t = ${this.time.toFixed(1)} s of ${this.duration.toFixed(1)} s`;
     this.noteLine.textContent = frame.note ? `${formatTime(frame.note.t)}: ${frame.note.text}` : '';
     if (this.strip) {
       this.strip.setTime(this.time);
@@ -397,8 +519,10 @@ export class App {
   }
 
   pause() {
+    const wasPlaying = this.playing;
     this.playing = false;
     this.playButton.innerHTML = ICONS.play;
+    if (wasPlaying) this.updateFragment();
   }
 
   togglePlay() {
@@ -426,6 +550,7 @@ export class App {
     this.selectedIndex = index;
     this.view.select(index);
     this.redraw();
+    this.updateFragment();
   }
 
   updatePanel() {
@@ -490,23 +615,19 @@ export class App {
       selectId: (id) => this.select(this.timeline.indexOfId.get(id) ?? -1),
       selectedInfo: () => (this.panel.hidden ? null : this.panel.innerText),
       screenPositionOf: (id) => this.view.screenPositionOf(this.timeline.indexOfId.get(id)),
-      setLabels: (on) => {
-        this.labelsToggle.input.checked = on;
-        this.view.setLabelsVisible(on);
-        this.view.render();
-      },
-      setOverlay: (on) => {
-        this.overlayToggle.input.checked = on;
-        this.view.setOverlayVisible(on);
-        this.view.render();
-      },
+      setLabels: (on) => this.setLabelsVisible(on),
+      setOverlay: (on) => this.setOverlayVisible(on),
       setFocus: (on) => this.setFocus(on),
       setLatches: (on) => {
         this.latchesToggle.input.checked = on;
         this.view.showLatches = on;
         this.redraw();
       },
-      fit: (view) => this.view.fit(view),
+      fit: (view) => this.fit(view === 'front' ? '3d' : view),
+      videoFrame: (t) => this.videoFrame(t),
+      videoTurn: (degrees) => this.videoTurn(degrees),
+      fragment: () => window.location.hash,
+      distanceLegend: () => (this.distanceLine.hidden ? null : this.distanceLine.innerText.replace(/\s+/g, ' ').trim()),
       camera: (position, target) => {
         this.view.camera.position.set(...position);
         this.view.controls.target.set(...target);

@@ -70,3 +70,26 @@ export function partColor(kind, rgb, scheme = 'paper') {
 export function rgbToCss(rgb) {
   return `rgb(${rgb[0]}, ${rgb[1]}, ${rgb[2]})`;
 }
+
+// The legend of the distance cubes up to `max`: one swatch for each of the paper's ten colours
+// used, then one for the dark ramp's range (10 to max), drawn as the ramp it is.
+export function distanceLegend(max) {
+  const entries = [];
+  const named = Math.min(max, PAPER_DISTANCE_COLORS.length - 1);
+  for (let d = 0; d <= named; ++d) {
+    const rgb = distanceColor(d);
+    entries.push({ label: String(d), title: `${d} motion${d === 1 ? '' : 's'} to the goal`, background: rgbToCss(rgb), dark: d === 4 });
+  }
+  if (max >= PAPER_DISTANCE_COLORS.length) {
+    const from = PAPER_DISTANCE_COLORS.length;
+    const label = max === from ? String(from) : `${from}\u2013${max}`;
+    const end = distanceColor(max);
+    entries.push({
+      label,
+      title: `${label} motions to the goal: violet to navy${max > DARK_RAMP_END ? `, navy from ${DARK_RAMP_END}` : ''}`,
+      background: `linear-gradient(to right, ${rgbToCss(distanceColor(from))}, ${rgbToCss(end)})`,
+      dark: true,
+    });
+  }
+  return entries;
+}

@@ -4,6 +4,10 @@ html, body { margin: 0; height: 100%; overflow: hidden; background: #e9edf2;
   font: 13px/1.35 system-ui, -apple-system, "Segoe UI", Roboto, "DejaVu Sans", sans-serif; color: #1d2430; }
 #datomsim-viewer { position: fixed; inset: 0; --dv-bar: 52px; }
 #datomsim-viewer.dv-has-strip { --dv-bar: 96px; }
+#datomsim-viewer.dv-video { --dv-bar: 0px; }
+#datomsim-viewer.dv-video .dv-bar, #datomsim-viewer.dv-video .dv-help { display: none; }
+.dv-clock { font-variant-numeric: tabular-nums; color: #1d2430; font-weight: 600; }
+.dv-video .dv-top { max-width: calc(100% - 24px); }
 #datomsim-viewer [hidden] { display: none !important; }
 .dv-canvas { position: absolute; inset: 0 0 var(--dv-bar) 0; }
 .dv-canvas canvas { display: block; }
@@ -17,6 +21,12 @@ html, body { margin: 0; height: 100%; overflow: hidden; background: #e9edf2;
 .dv-subtitle { color: #4a5566; }
 .dv-note { margin-top: 2px; color: #8a1c1c; min-height: 1.35em; }
 .dv-motions { margin-top: 2px; color: #2c4a7a; }
+.dv-distances { margin-top: 3px; display: flex; align-items: center; gap: 3px; flex-wrap: wrap; }
+.dv-distances > span:first-child { margin-right: 2px; }
+.dv-distance { min-width: 14px; padding: 0 3px; text-align: center; font-size: 11px; font-weight: 600;
+  line-height: 15px; border: 1px solid #202020; border-radius: 2px; text-shadow: none; }
+.dv-path { white-space: nowrap; margin-left: 8px; display: inline-flex; align-items: center; gap: 4px; }
+.dv-path-swatch { display: inline-block; width: 16px; height: 4px; border-radius: 2px; }
 .dv-target { margin-top: 2px; display: flex; align-items: center; gap: 4px; }
 .dv-target-swatch { opacity: 0.8; border-radius: 50%; border-color: #667; width: 11px; height: 11px; }
 .dv-target-swatch + span { margin-right: 4px; }
@@ -52,7 +62,7 @@ html, body { margin: 0; height: 100%; overflow: hidden; background: #e9edf2;
 .dv-slider { width: 100%; margin: 0; }
 .dv-markers { position: absolute; left: 7px; right: 7px; top: -7px; height: 6px; pointer-events: none; }
 .dv-marker { position: absolute; width: 2px; height: 6px; background: #b33; margin-left: -1px; }
-.dv-time { font-variant-numeric: tabular-nums; min-width: 120px; text-align: right; }
+.dv-time { font-variant-numeric: tabular-nums; min-width: 120px; text-align: right; white-space: nowrap; }
 .dv-toggles { display: flex; align-items: center; gap: 8px; }
 .dv-toggle { display: flex; align-items: center; gap: 3px; cursor: pointer; user-select: none; }
 .dv-panel { position: absolute; top: 8px; right: 10px; width: 270px; background: rgba(255, 255, 255, 0.94);

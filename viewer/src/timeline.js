@@ -265,7 +265,7 @@ export class Timeline {
         inTransit: m.moved,
       };
     });
-    return { t, modules, motions, note: state.note, end: state.end };
+    return { t, modules, motions, note: state.note, end: state.end, applied: state.applied };
   }
 
   // The module a latched own connector holds, {m: id, c: its connector}, or null when unknown:

@@ -27,7 +27,7 @@ function colorOf(rgb) {
 }
 
 export class View3D {
-  constructor(container, timeline, kinematics, overlay) {
+  constructor(container, timeline, kinematics, overlay, { shadows = true } = {}) {
     this.container = container;
     this.timeline = timeline;
     this.kinematics = kinematics;
@@ -41,7 +41,7 @@ export class View3D {
     // Renderer, camera (z up, as the lattice) and orbit controls.
     this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(window.devicePixelRatio || 1);
-    this.renderer.shadowMap.enabled = true;
+    this.renderer.shadowMap.enabled = shadows;
     this.renderer.shadowMap.type = THREE.PCFShadowMap;
     container.appendChild(this.renderer.domElement);
     this.labelRenderer = new CSS2DRenderer();
@@ -352,6 +352,9 @@ export class View3D {
       const label = this.labels[m.index];
       label.position.copy(m.position);
     }
+    // Out of focus mode the ghosts are all collapsed: not drawing them halves a software
+    // renderer's work (headless Chromium's, which makes the videos).
+    this.ghostMesh.visible = this.focus;
     for (const mesh of [this.mesh, this.ghostMesh]) {
       mesh.instanceMatrix.needsUpdate = true;
       if (mesh.instanceColor) mesh.instanceColor.needsUpdate = true;
@@ -379,7 +382,9 @@ export class View3D {
   // Frames the whole scene: from the front left and above, as the paper's figures look at it, or
   // from the top (view = 'top'), as its distance maps do. The distance is the smallest at which
   // every corner of the scene's box is inside the field of view.
-  fit(view = 'front') {
+  // `reservedTop` pixels at the top of the canvas are kept clear of the scene (the captions).
+  fit(view = 'front', { reservedTop = 0 } = {}) {
+    this.lastFit = { view, reservedTop };
     const box = this.bounds();
     const centre = box.getCenter(new THREE.Vector3());
     // Straight down would leave the orbit controls (z up) without a heading: tilt a little.
@@ -388,8 +393,13 @@ export class View3D {
     const up = new THREE.Vector3(0, 0, 1);
     const right = new THREE.Vector3().crossVectors(forward, up).normalize();
     const trueUp = new THREE.Vector3().crossVectors(right, forward);
-    const tanV = Math.tan(THREE.MathUtils.degToRad(this.camera.fov) / 2);
-    const tanH = tanV * this.camera.aspect;
+    // The scene fits the canvas below the reserved band: a view of that band's height, centred
+    // lower by half the band (at the target's depth; exact for the flat top view).
+    const height = Math.max(1, this.container.clientHeight);
+    const reserved = Math.min(0.5, Math.max(0, reservedTop / height));
+    const tanFull = Math.tan(THREE.MathUtils.degToRad(this.camera.fov) / 2);
+    const tanV = tanFull * (1 - reserved);
+    const tanH = tanFull * this.camera.aspect;
     // Every module centre and overlay cell, with a module's radius around it, must be in view.
     // For the eye at target - D forward with target = centre + a right + b up, a point at
     // (x, y, z) in the camera frame is in view when |x - a| + r <= (z + D) tanH (and likewise for
@@ -414,6 +424,7 @@ export class View3D {
       .clone()
       .addScaledVector(right, (tanH * (plusX - minusX)) / 2)
       .addScaledVector(trueUp, (tanV * (plusY - minusY)) / 2);
+    target.addScaledVector(trueUp, tanFull * reserved * distance);
     this.camera.position.copy(target).addScaledVector(forward, -distance);
     this.camera.near = Math.max(0.01, distance / 200);
     this.camera.far = distance * 10;

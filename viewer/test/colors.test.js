@@ -3,7 +3,7 @@ import { readFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { describe, it } from 'node:test';
 import { fileURLToPath } from 'node:url';
-import { CONNECTOR_RED, PAPER_DISTANCE_COLORS, distanceColor, partColor } from '../src/colors.js';
+import { CONNECTOR_RED, PAPER_DISTANCE_COLORS, distanceColor, distanceLegend, partColor, rgbToCss } from '../src/colors.js';
 import { NEIGHBOUR_OFFSETS, cellToWorld, directionVector, nearestDirection } from '../src/lattice.js';
 import { parseTrace } from '../src/trace.js';
 import { fixtureText } from './fixtures/synthetic.js';
@@ -58,5 +58,25 @@ describe('lattice', () => {
       assert.deepEqual(NEIGHBOUR_OFFSETS[d].map((x) => 0 - x + 0), opposite.map((x) => x + 0));
       assert.ok(Math.abs(Math.hypot(...directionVector(d)) - 1) < 1e-12);
     }
+  });
+});
+
+describe('distance legend', () => {
+  it('has a swatch for each distance up to the largest, in the cubes\' colours', () => {
+    const legend = distanceLegend(7);
+    assert.deepEqual(legend.map((e) => e.label), ['0', '1', '2', '3', '4', '5', '6', '7']);
+    legend.forEach((e, d) => assert.equal(e.background, rgbToCss(distanceColor(d))));
+  });
+
+  it('shows the dark ramp past 9 as one range, from its first colour to the largest distance\'s', () => {
+    const legend = distanceLegend(31);
+    assert.equal(legend.length, 11);
+    assert.equal(legend[10].label, '10\u201331');
+    assert.equal(
+      legend[10].background,
+      `linear-gradient(to right, ${rgbToCss(distanceColor(10))}, ${rgbToCss(distanceColor(31))})`,
+    );
+    assert.equal(distanceLegend(10)[10].label, '10');
+    assert.deepEqual(distanceLegend(0).map((e) => e.label), ['0']);
   });
 });

@@ -10,6 +10,8 @@ packages=(
   clang-format cmake-format
   # The fuzz harnesses (scripts/fuzz.sh): Clang and its libFuzzer and sanitizer runtimes.
   clang libclang-rt-dev
+  # The Python package (docs/python.md): its module, and what its tests and users import.
+  pybind11-dev python3-dev python3-numpy python3-pytest
   # Shell completion is tested in both shells it is made for (docs/shell-completion.md).
   bash-completion zsh
 )

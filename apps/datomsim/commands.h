@@ -38,6 +38,50 @@ void addViewCommand(CLI::App& app);
 void addMeshCommand(CLI::App& app);
 void addVideoCommand(CLI::App& app);
 
+// What `run` takes, as the command line spells it (cells "x,y,z", parameters "KEY=VALUE"); the
+// Python package fills the same from its keywords.
+struct RunArguments {
+  std::string scene, program, goal, start, out, trace, target, root;
+  std::vector<std::string> parameters;
+  double timeoutS = 0, untilS = 0;
+  bool stats = false;
+  RuleArguments rules;
+  std::string seed = "1";
+  double delayMs = 10, jitterMs = 0;
+  int maxMotions = 0;
+  // --connectivity was given (reconfiguration keeps the ensemble connected unless told).
+  bool connectivityGiven = false;
+  // Record the trace even with no --trace file (the caller writes it).
+  bool wantTrace = false;
+};
+
+// A run and what its JSON is made of (runJson); `failure` says why it did not do what it was
+// asked (the target not built, the mobile stuck, an invariant violated), when it did not.
+struct RunOutput {
+  algorithms::ProgramInfo info;
+  experiment::RunResult result;
+  std::map<std::string, std::string> parameters;
+  std::optional<std::string> failure;
+};
+
+// `run` on a scene in memory (`sceneName` goes into the description): the checks and the
+// messages of the command line, which throws UsageError where `run` would refuse. A run that
+// fails is a result with its failure, not an error.
+RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArguments& args,
+                     std::span<const ProgramEntry> added = {});
+
+// `reach` on a scene in memory: the mobile chosen and taken out as `run` does, the goal checked
+// (inside the world, next to a module), the distances and, with a start, the path.
+struct ReachOutput {
+  world::World fixed;  // the scene without the mobile
+  bool mobileTakenOut = false;
+  motion::DistanceMap map;
+  std::vector<geometry::Cell> path;
+};
+ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
+                         const std::optional<geometry::Cell>& start,
+                         const motion::RuleOptions& options);
+
 // For `video` and `demo`: a count of frames on standard error when it is a terminal (none with
 // --quiet or in a log), and what a video holds for its "wrote" line.
 std::function<void(int, int)> videoProgress(const std::string& name);

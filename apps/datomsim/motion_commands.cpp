@@ -88,38 +88,14 @@ void addReach(CLI::App& app) {
     const motion::RuleOptions options = args->rules.options();
     const std::optional<geometry::Cell> start =
         args->start.empty() ? std::nullopt : std::optional(parseCell("--start", args->start));
-    io::Scene scene = unwrap(io::readScene(args->scene));
-    // The mobile, chosen as `run` chooses it, is not part of the fixed world.
-    const experiment::MobileChoice mobile =
-        unwrap(experiment::chooseMobile(scene.world, goal, start));
-    if (mobile.module) check(scene.world.remove(*mobile.module));
-    const bool mobileTakenOut = mobile.module.has_value();
-    // A goal next to no module is reached by nothing: say so rather than draw an empty map.
-    bool touches = false;
-    for (int d = 0; d < geometry::kDirectionCount && !touches; ++d) {
-      touches = scene.world.moduleAt(goal + geometry::neighbourOffset(d)) != nullptr;
-    }
-    if (!touches && scene.world.isInside(goal)) {
-      throw UsageError(
-          fmt::format("goal {} touches no module: no module can reach it (a goal "
-                      "must be next to a module of the scene)",
-                      geometry::toString(goal)));
-    }
-    const motion::RuleTable table;
-    const motion::DistanceMap map = unwrap(motion::reach(scene.world, table, goal, options));
-
-    std::vector<geometry::Cell> path;
-    if (start) {
-      path.push_back(*start);
-      for (const motion::Motion& m :
-           unwrap(motion::followGradient(scene.world, table, map, *start))) {
-        path.push_back(m.goal);
-      }
-    }
+    const ReachOutput reached =
+        reachOnScene(unwrap(io::readScene(args->scene)), goal, start, options);
     const std::string title = fmt::format("{}: distances to {} ({})", args->scene,
                                           geometry::toString(goal), ruleLabel(options));
-    writePictures(scene.world, mobileTakenOut, map, path, title, pictures);
-    writeOutput(args->out, [&](std::FILE* file) { return writeReachJson(map, path, file); });
+    writePictures(reached.fixed, reached.mobileTakenOut, reached.map, reached.path, title,
+                  pictures);
+    writeOutput(args->out,
+                [&](std::FILE* file) { return writeReachJson(reached.map, reached.path, file); });
   });
 }
 
@@ -204,6 +180,37 @@ void addVerify(CLI::App& app) {
 }
 
 }  // namespace
+
+ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
+                         const std::optional<geometry::Cell>& start,
+                         const motion::RuleOptions& options) {
+  // The mobile, chosen as `run` chooses it, is not part of the fixed world.
+  const experiment::MobileChoice mobile =
+      unwrap(experiment::chooseMobile(scene.world, goal, start));
+  if (mobile.module) check(scene.world.remove(*mobile.module));
+  // A goal next to no module is reached by nothing: say so rather than draw an empty map.
+  bool touches = false;
+  for (int d = 0; d < geometry::kDirectionCount && !touches; ++d) {
+    touches = scene.world.moduleAt(goal + geometry::neighbourOffset(d)) != nullptr;
+  }
+  if (!touches && scene.world.isInside(goal)) {
+    throw UsageError(
+        fmt::format("goal {} touches no module: no module can reach it (a goal "
+                    "must be next to a module of the scene)",
+                    geometry::toString(goal)));
+  }
+  const motion::RuleTable table;
+  motion::DistanceMap map = unwrap(motion::reach(scene.world, table, goal, options));
+  std::vector<geometry::Cell> path;
+  if (start) {
+    path.push_back(*start);
+    for (const motion::Motion& m :
+         unwrap(motion::followGradient(scene.world, table, map, *start))) {
+      path.push_back(m.goal);
+    }
+  }
+  return {std::move(scene.world), mobile.module.has_value(), std::move(map), std::move(path)};
+}
 
 void addMotionCommands(CLI::App& app) {
   addReach(app);

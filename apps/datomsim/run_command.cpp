@@ -132,16 +132,7 @@ void printStatistics(const sim::Statistics& statistics) {
 }  // namespace
 
 void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
-  struct Arguments {
-    std::string scene, program, goal, start, out, trace, target, root;
-    std::vector<std::string> parameters;
-    double timeoutS = 0, untilS = 0;
-    bool stats = false;
-    RuleArguments rules;
-    std::string seed = "1";
-    double delayMs = 10, jitterMs = 0;
-    int maxMotions = 0;
-  };
+  using Arguments = RunArguments;
   auto args = std::make_shared<Arguments>();
   CLI::App* command =
       app.add_subcommand("run", "Run a module program on a scene in the discrete-event simulator");
@@ -206,65 +197,83 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
     std::vector<NamedPath> outputs = {{"--out", args->out}};
     if (!args->trace.empty()) outputs.push_back({"--trace", args->trace});
     refuseClashes({{"scene", args->scene}, {"--target", args->target}}, outputs);
-    experiment::RunRequest request;
-    request.program = args->program;
-    request.added = added;
-    if (!args->goal.empty()) request.goal = parseCell("--goal", args->goal);
-    if (!args->start.empty()) request.start = parseCell("--start", args->start);
-    request.simulation.rules = args->rules.options();
-    request.simulation.connectivity = request.simulation.rules.connectivity;
-    const algorithms::ProgramInfo info = *algorithms::programInfo(args->program, added);
-    if (info.reshapes) {
-      // Reconfiguration keeps the ensemble in one piece unless told otherwise; the engine checks
-      // it live, and the modules' gradient judges rules without it (docs/reconfiguration.md).
-      request.simulation.connectivity =
-          args->rules.connectivity == "on" || command->count("--connectivity") == 0;
-      request.simulation.rules.connectivity = request.simulation.connectivity;
-    }
-    request.simulation.maxMotions = args->maxMotions;
-    request.simulation.seed = parseSeed("--seed", args->seed);
-    request.simulation.messageDelay = Time(args->delayMs * kMillisecond);
-    request.simulation.messageJitter = Time(args->jitterMs * kMillisecond);
-    request.trace = !args->trace.empty();
-    request.description = fmt::format("{} on {}", args->program, args->scene);
-    io::Scene scene = unwrap(io::readScene(args->scene));
-    const std::vector<target::Target>& targets =
-        args->target.empty() ? scene.targets : unwrap(io::readScene(args->target)).targets;
-    if (!args->target.empty() && targets.empty()) {
-      throw UsageError(args->target + " has no target");
-    }
-    for (const target::Target& target : targets) {
-      request.targets.push_back(unwrap(target.cells()));
-    }
-    if (args->timeoutS > 0) request.reshape.timeout = Time(args->timeoutS * kSecond);
-    if (args->untilS > 0) request.until = Time(args->untilS * kSecond);
-    // The scene's parameters for this program, then the command line's over them.
-    if (const auto inScene = scene.parameters.find(args->program);
-        inScene != scene.parameters.end()) {
-      request.parameters = inScene->second;
-    }
-    if (!args->root.empty()) request.parameters["root"] = args->root;
-    for (const std::string& pair : args->parameters) {
-      const size_t equals = pair.find('=');
-      if (equals == std::string::npos || equals == 0) {
-        throw UsageError("--param " + pair + ": expected KEY=VALUE");
-      }
-      request.parameters[pair.substr(0, equals)] = pair.substr(equals + 1);
-    }
-    const motion::RuleTable table;
-    const experiment::RunResult result =
-        unwrap(experiment::runProgram(std::move(scene.world), table, request));
+    args->connectivityGiven = command->count("--connectivity") > 0;
+    const RunOutput run = runOnScene(unwrap(io::readScene(args->scene)), args->scene, *args, added);
     // A failed run is written like a successful one, to be looked at and counted; then it fails.
-    if (request.trace) writeOutput(args->trace, result.trace);
+    if (!args->trace.empty()) writeOutput(args->trace, run.result.trace);
     writeOutput(args->out, [&](std::FILE* file) {
-      return writeRunJson(info, result, request.parameters, file);
+      return writeRunJson(run.info, run.result, run.parameters, file);
     });
-    if (args->stats) printStatistics(result.statistics);
-    if (result.reshape && !result.reshape->success) {
-      throw UsageError("the target was not built: " + result.reshape->reason);
-    }
-    if (result.failure) throw UsageError(*result.failure);
+    if (args->stats) printStatistics(run.result.statistics);
+    if (run.failure) throw UsageError(*run.failure);
   });
+}
+
+RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArguments& args,
+                     std::span<const ProgramEntry> added) {
+  experiment::RunRequest request;
+  request.program = args.program;
+  request.added = added;
+  // The command line's --program check, for callers that did not pass through it (Python).
+  const Result<algorithms::ProgramInfo> info = algorithms::programInfo(args.program, added);
+  if (!info) {
+    std::string names;
+    for (const algorithms::ProgramInfo& known : algorithms::programs(added)) {
+      names += (names.empty() ? "" : ",") + std::string(known.name);
+    }
+    throw UsageError(fmt::format("--program: {} not in {{{}}}", args.program, names));
+  }
+  if (!args.goal.empty()) request.goal = parseCell("--goal", args.goal);
+  if (!args.start.empty()) request.start = parseCell("--start", args.start);
+  request.simulation.rules = args.rules.options();
+  request.simulation.connectivity = request.simulation.rules.connectivity;
+  if (info->reshapes) {
+    // Reconfiguration keeps the ensemble in one piece unless told otherwise; the engine checks
+    // it live, and the modules' gradient judges rules without it (docs/reconfiguration.md).
+    request.simulation.connectivity = args.rules.connectivity == "on" || !args.connectivityGiven;
+    request.simulation.rules.connectivity = request.simulation.connectivity;
+  }
+  if (args.maxMotions < 0)
+    throw UsageError(fmt::format("--max-motions {}: 1 or more", args.maxMotions));
+  request.simulation.maxMotions = args.maxMotions;
+  request.simulation.seed = parseSeed("--seed", args.seed);
+  for (const auto& [option, value] :
+       {std::pair{"--delay-ms", args.delayMs}, {"--jitter-ms", args.jitterMs}}) {
+    if (!std::isfinite(value) || value < 0) {
+      throw UsageError(fmt::format("{} {}: a number of milliseconds, 0 or more", option, value));
+    }
+  }
+  request.simulation.messageDelay = Time(args.delayMs * kMillisecond);
+  request.simulation.messageJitter = Time(args.jitterMs * kMillisecond);
+  request.trace = args.wantTrace || !args.trace.empty();
+  request.description = fmt::format("{} on {}", args.program, sceneName);
+  const std::vector<target::Target>& targets =
+      args.target.empty() ? scene.targets : unwrap(io::readScene(args.target)).targets;
+  if (!args.target.empty() && targets.empty()) throw UsageError(args.target + " has no target");
+  for (const target::Target& target : targets) request.targets.push_back(unwrap(target.cells()));
+  if (args.timeoutS > 0) request.reshape.timeout = Time(args.timeoutS * kSecond);
+  if (args.untilS > 0) request.until = Time(args.untilS * kSecond);
+  // The scene's parameters for this program, then the command line's over them.
+  if (const auto inScene = scene.parameters.find(args.program); inScene != scene.parameters.end()) {
+    request.parameters = inScene->second;
+  }
+  if (!args.root.empty()) request.parameters["root"] = args.root;
+  for (const std::string& pair : args.parameters) {
+    const size_t equals = pair.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      throw UsageError("--param " + pair + ": expected KEY=VALUE");
+    }
+    request.parameters[pair.substr(0, equals)] = pair.substr(equals + 1);
+  }
+  const motion::RuleTable table;
+  RunOutput output{*info, unwrap(experiment::runProgram(std::move(scene.world), table, request)),
+                   request.parameters, std::nullopt};
+  if (output.result.reshape && !output.result.reshape->success) {
+    output.failure = "the target was not built: " + output.result.reshape->reason;
+  } else if (output.result.failure) {
+    output.failure = output.result.failure;
+  }
+  return output;
 }
 
 }  // namespace datomsim::app

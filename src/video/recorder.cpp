@@ -310,7 +310,11 @@ Result<VideoSummary> recordVideo(const VideoRequest& request) {
       const double t = std::min(summary.to, summary.from + k * summary.speed / request.fps);
       frameCalls.push_back(fmt::format("window.datomsimViewer.videoFrame({:.6f})", t));
     }
-    // The end is held a second, so that a viewer sees how the run ended.
+    // The last frame shows the end itself, then it is held a second, so that a viewer sees how
+    // the run ended.
+    if (summary.from + steps * summary.speed / request.fps < summary.to - 1e-9) {
+      frameCalls.push_back(fmt::format("window.datomsimViewer.videoFrame({:.6f})", summary.to));
+    }
     for (int k = 0; k < request.fps; ++k) frameCalls.push_back(frameCalls.back());
   }
   summary.frames = int(frameCalls.size());

@@ -1,0 +1,420 @@
+// datomsim._core: the Python package's C++ half (docs/python.md). It drives the same functions as
+// the command line (apps/datomsim: runOnScene, reachOnScene, movesJson), so that a run from
+// Python gives the JSON `run --out` gives, and a refusal the same message, raised as
+// datomsim.Error. Arrays (cells, distances, colours) are numpy arrays; the rest is what
+// datomsim/__init__.py shapes into Python values.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <fmt/format.h>
+#include <algorithm>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "../../apps/datomsim/commands.h"
+#include "../../apps/datomsim/motion_json.h"
+#include "datom/dimensions.h"
+#include "datom/linkage.h"
+#include "geometry/cell_text.h"
+#include "geometry/lattice.h"
+#include "io/scene_file.h"
+#include "motion/motion.h"
+#include "scene/box.h"
+#include "scene/paper_arch.h"
+#include "scene/random_scene.h"
+
+namespace py = pybind11;
+
+namespace datomsim::python {
+namespace {
+
+using app::UsageError;
+using geometry::Cell;
+
+// A cell given as (x, y, z) or as the command line's text ("6,5,2", "(6,5,2)"); errors name
+// `option` as the command line would.
+Cell cellArgument(const py::handle& value, const std::string& option) {
+  if (py::isinstance<py::str>(value)) return app::parseCell(option, value.cast<std::string>());
+  if (py::isinstance<py::sequence>(value) && py::len(value) == 3) {
+    const py::sequence items = value.cast<py::sequence>();
+    std::string text;
+    for (size_t k = 0; k < 3; ++k) {
+      const py::handle item = items[k];
+      if (!py::isinstance<py::int_>(item) && !(py::hasattr(item, "__index__"))) {
+        throw UsageError(fmt::format("{} {}: expected three integers x,y,z", option,
+                                     py::repr(value).cast<std::string>()));
+      }
+      text += (k ? "," : "") +
+              py::str(py::int_(py::reinterpret_borrow<py::object>(item))).cast<std::string>();
+    }
+    return app::parseCell(option, text);
+  }
+  throw UsageError(fmt::format("{} {}: expected three integers x,y,z", option,
+                               py::repr(value).cast<std::string>()));
+}
+
+std::optional<Cell> optionalCell(const py::object& value, const std::string& option) {
+  if (value.is_none()) return std::nullopt;
+  return cellArgument(value, option);
+}
+
+// An (n, 3) int32 array of cells.
+py::array_t<int32_t> cellArray(const std::vector<Cell>& cells) {
+  py::array_t<int32_t> out({py::ssize_t(cells.size()), py::ssize_t(3)});
+  auto view = out.mutable_unchecked<2>();
+  for (size_t k = 0; k < cells.size(); ++k) {
+    view(py::ssize_t(k), 0) = cells[k].x;
+    view(py::ssize_t(k), 1) = cells[k].y;
+    view(py::ssize_t(k), 2) = cells[k].z;
+  }
+  return out;
+}
+
+std::string onOff(bool on) {
+  return on ? "on" : "off";
+}
+
+app::RuleArguments ruleArguments(const std::string& rules, bool attachment, bool connectivity) {
+  app::RuleArguments arguments;
+  arguments.rules = rules;
+  arguments.attachment = onOff(attachment);
+  arguments.connectivity = onOff(connectivity);
+  return arguments;
+}
+
+// A scene in memory: the modules and what the file formats carry besides them.
+class Scene {
+ public:
+  explicit Scene(io::Scene scene) : scene_(std::move(scene)) {}
+
+  const io::Scene& scene() const { return scene_; }
+
+  size_t size() const { return scene_.world.size(); }
+
+  py::array_t<int32_t> cells() const {
+    std::vector<Cell> cells;
+    cells.reserve(size());
+    for (const world::Module& m : scene_.world.modules()) cells.push_back(m.cell);
+    return cellArray(cells);
+  }
+  py::array_t<uint32_t> ids() const {
+    py::array_t<uint32_t> out{py::ssize_t(size())};
+    auto view = out.mutable_unchecked<1>();
+    py::ssize_t k = 0;
+    for (const world::Module& m : scene_.world.modules()) view(k++) = m.id.value;
+    return out;
+  }
+  py::array_t<uint8_t> colors() const {
+    py::array_t<uint8_t> out({py::ssize_t(size()), py::ssize_t(3)});
+    auto view = out.mutable_unchecked<2>();
+    py::ssize_t k = 0;
+    for (const world::Module& m : scene_.world.modules()) {
+      view(k, 0) = m.color.r;
+      view(k, 1) = m.color.g;
+      view(k, 2) = m.color.b;
+      ++k;
+    }
+    return out;
+  }
+  py::array_t<uint8_t> orientations() const {
+    py::array_t<uint8_t> out{py::ssize_t(size())};
+    auto view = out.mutable_unchecked<1>();
+    py::ssize_t k = 0;
+    for (const world::Module& m : scene_.world.modules()) {
+      view(k++) = uint8_t(m.orientation.code());
+    }
+    return out;
+  }
+  std::optional<std::tuple<int, int, int>> grid() const {
+    const auto& size = scene_.world.bounds().gridSize;
+    if (!size) return std::nullopt;
+    return std::tuple{size->x, size->y, size->z};
+  }
+  std::optional<std::string> name() const { return scene_.name; }
+
+  // Adds a module (the next free id) and latches it to its neighbours; returns its id.
+  uint32_t add(const py::object& cell, int orientation, const std::tuple<int, int, int>& color) {
+    const Cell at = cellArgument(cell, "cell");
+    const auto code = geometry::Orientation::fromCode(orientation);
+    if (!code) throw UsageError(fmt::format("orientation {}: a code in 0..23", orientation));
+    const auto [r, g, b] = color;
+    for (const int channel : {r, g, b}) {
+      if (channel < 0 || channel > 255) {
+        throw UsageError(fmt::format("color ({},{},{}): channels in 0..255", r, g, b));
+      }
+    }
+    const ModuleId id = scene_.world.nextFreeId();
+    app::check(scene_.world.add({id, at, *code, Color{uint8_t(r), uint8_t(g), uint8_t(b)}}));
+    scene_.world.latchAllNeighbours();
+    return id.value;
+  }
+  void remove(uint32_t id) { app::check(scene_.world.remove(ModuleId{id})); }
+  void move(uint32_t id, const py::object& cell) {
+    app::check(scene_.world.move(ModuleId{id}, cellArgument(cell, "cell")));
+    scene_.world.latchAllNeighbours();
+  }
+  std::optional<uint32_t> moduleAt(const py::object& cell) const {
+    const world::Module* m = scene_.world.moduleAt(cellArgument(cell, "cell"));
+    if (m == nullptr) return std::nullopt;
+    return m->id.value;
+  }
+
+  // Every empty cell inside the world next to a module, sorted by x, then y, then z: where a
+  // module could be added or a mobile could stand.
+  py::array_t<int32_t> freeSurfaceCells() const {
+    std::set<std::tuple<int32_t, int32_t, int32_t>> found;
+    for (const world::Module& m : scene_.world.modules()) {
+      for (int d = 0; d < geometry::kDirectionCount; ++d) {
+        const Cell next = m.cell + geometry::neighbourOffset(d);
+        if (scene_.world.isInside(next) && scene_.world.moduleAt(next) == nullptr) {
+          found.insert({next.x, next.y, next.z});
+        }
+      }
+    }
+    std::vector<Cell> cells;
+    cells.reserve(found.size());
+    for (const auto& [x, y, z] : found) cells.push_back({x, y, z});
+    return cellArray(cells);
+  }
+
+  // The cells of each target shape, in the scene's order.
+  std::vector<py::array_t<int32_t>> targets() const {
+    std::vector<py::array_t<int32_t>> out;
+    for (const target::Target& shape : scene_.targets) {
+      out.push_back(cellArray(app::unwrap(shape.cells())));
+    }
+    return out;
+  }
+
+  void save(const std::filesystem::path& path) const {
+    io::Scene written = scene_;
+    app::declareGridForVisibleSim(written, path.string());
+    app::check(io::writeScene(written, path));
+  }
+
+  Scene copy() const { return *this; }
+
+  std::string repr() const {
+    return fmt::format(
+        "<datomsim.Scene {}{} modules{}>", scene_.name ? *scene_.name + ": " : "", size(),
+        scene_.targets.empty() ? "" : fmt::format(", {} target(s)", scene_.targets.size()));
+  }
+
+ private:
+  io::Scene scene_;
+};
+
+Scene sceneOf(world::World world, std::string name) {
+  world.latchAllNeighbours();
+  io::Scene scene;
+  scene.world = std::move(world);
+  scene.name = std::move(name);
+  return Scene(std::move(scene));
+}
+
+// {"cells": (n, 3), "distances": (n,), "path": (p, 3), "goal": (3,)}: `reach --out` as arrays.
+py::dict reach(const Scene& scene, const py::object& goal, const py::object& start,
+               const std::string& rules, bool attachment, bool connectivity) {
+  const Cell at = cellArgument(goal, "--goal");
+  const app::ReachOutput reached =
+      app::reachOnScene(scene.scene(), at, optionalCell(start, "--start"),
+                        ruleArguments(rules, attachment, connectivity).options());
+  const auto sorted = reached.map.sorted();
+  std::vector<Cell> cells;
+  py::array_t<int32_t> distances{py::ssize_t(sorted.size())};
+  auto view = distances.mutable_unchecked<1>();
+  cells.reserve(sorted.size());
+  for (size_t k = 0; k < sorted.size(); ++k) {
+    cells.push_back(sorted[k].first);
+    view(py::ssize_t(k)) = sorted[k].second;
+  }
+  py::dict out;
+  out["goal"] = py::make_tuple(at.x, at.y, at.z);
+  out["cells"] = cellArray(cells);
+  out["distances"] = distances;
+  out["path"] = cellArray(reached.path);
+  return out;
+}
+
+// The JSON text of `moves --out`.
+std::string moves(const Scene& scene, const py::object& at, const std::string& rules,
+                  bool attachment) {
+  const Cell cell = cellArgument(at, "--at");
+  const world::World& world = scene.scene().world;
+  if (!world.isInside(cell)) {
+    throw UsageError("--at " + geometry::toString(cell) + " " + world.bounds().whyOutside(cell));
+  }
+  const world::Module* mobile = world.moduleAt(cell);
+  const motion::Mobile where{cell, mobile ? std::optional(mobile->id) : std::nullopt};
+  const motion::RuleTable table;
+  return app::movesJson(
+      cell,
+      motion::evaluateAll(world, table, where, ruleArguments(rules, attachment, false).options()));
+}
+
+// (the JSON text of `run --out`, the trace or None, the failure or None).
+std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> run(
+    const Scene& scene, const std::string& program, const py::dict& options) {
+  app::RunArguments args;
+  args.program = program;
+  const std::set<std::string> known = {"goal",         "start",  "rules",    "attachment",
+                                       "connectivity", "seed",   "delay_ms", "jitter_ms",
+                                       "max_motions",  "target", "timeout",  "until",
+                                       "params",       "root",   "trace",    "scene_name"};
+  for (const auto& [key, value] : options) {
+    const std::string name = key.cast<std::string>();
+    if (!known.contains(name)) {
+      throw UsageError(
+          fmt::format("run: unknown option {} (known: goal, start, rules, "
+                      "attachment, connectivity, seed, delay_ms, jitter_ms, "
+                      "max_motions, target, timeout, until, params, root, trace)",
+                      name));
+    }
+    if (value.is_none()) continue;
+    const auto cellText = [&](const char* option) {
+      const Cell cell = cellArgument(value, option);
+      return fmt::format("{},{},{}", cell.x, cell.y, cell.z);
+    };
+    if (name == "goal") args.goal = cellText("--goal");
+    if (name == "start") args.start = cellText("--start");
+    if (name == "root") args.root = cellText("--root");
+    if (name == "rules") args.rules.rules = value.cast<std::string>();
+    if (name == "attachment") args.rules.attachment = onOff(value.cast<bool>());
+    if (name == "connectivity") {
+      args.rules.connectivity = onOff(value.cast<bool>());
+      args.connectivityGiven = true;
+    }
+    if (name == "seed") args.seed = py::str(value).cast<std::string>();
+    if (name == "delay_ms") args.delayMs = value.cast<double>();
+    if (name == "jitter_ms") args.jitterMs = value.cast<double>();
+    if (name == "max_motions") args.maxMotions = value.cast<int>();
+    if (name == "target") args.target = py::str(value).cast<std::string>();
+    if (name == "timeout") args.timeoutS = value.cast<double>();
+    if (name == "until") args.untilS = value.cast<double>();
+    if (name == "trace") args.wantTrace = value.cast<bool>();
+    if (name == "params") {
+      for (const auto& [k, v] : value.cast<py::dict>()) {
+        args.parameters.push_back(py::str(k).cast<std::string>() + "=" +
+                                  py::str(v).cast<std::string>());
+      }
+    }
+  }
+  const std::string sceneName = options.contains("scene_name")
+                                    ? options["scene_name"].cast<std::string>()
+                                    : scene.scene().name.value_or("a scene from Python");
+  app::RunOutput output = app::runOnScene(scene.scene(), sceneName, args);
+  std::optional<std::string> trace;
+  if (args.wantTrace) trace = std::move(output.result.trace);
+  return {app::runJson(output.info, output.result, output.parameters), std::move(trace),
+          output.failure};
+}
+
+py::dict geometryOf(double radius, double thickness, const std::optional<double>& fraction) {
+  const datom::Dimensions d = app::unwrap(datom::dimensionsFor(radius, thickness));
+  py::dict out;
+  out["r"] = d.radius();
+  out["t"] = d.thickness();
+  out["c"] = d.connectorWidth();
+  out["e"] = d.linkLength();
+  out["a"] = d.amplitude();
+  out["r_prime"] = d.correctedRadius();
+  out["c_prime"] = d.correctedConnectorWidth();
+  out["e_prime"] = d.correctedLinkLength();
+  out["t_max"] = d.maxThickness();
+  out["core_edge"] = d.coreEdge();
+  if (fraction) {
+    if (!(*fraction >= 0 && *fraction <= 1)) {
+      throw UsageError(fmt::format("--fraction {}: a compression fraction in 0..1", *fraction));
+    }
+    const datom::Linkage linkage = app::unwrap(datom::solveLinkage(d, *fraction));
+    out["fraction"] = linkage.fraction;
+    out["travel"] = linkage.travel;
+    out["q0"] = linkage.angles.q0;
+    out["q1"] = linkage.angles.q1;
+    out["p0"] = linkage.angles.p0;
+    out["connector_turn"] = linkage.connectorTurn;
+  }
+  return out;
+}
+
+}  // namespace
+}  // namespace datomsim::python
+
+PYBIND11_MODULE(_core, module) {
+  using namespace datomsim;
+  using namespace datomsim::python;
+  module.doc() = "datomsim's C++ core: scenes, reach, moves, runs (see the package datomsim)";
+  app::setQuiet(true);  // Python says nothing on standard error; the values say it all
+  py::register_exception<app::UsageError>(module, "Error", PyExc_ValueError);
+  py::register_exception<app::CheckFailed>(module, "CheckFailed", PyExc_RuntimeError);
+
+  py::class_<Scene>(module, "Scene", "A scene: modules in an FCC lattice, and target shapes")
+      .def("__len__", &Scene::size)
+      .def_property_readonly("cells", &Scene::cells, "Module cells, (n, 3) int32, in file order")
+      .def_property_readonly("ids", &Scene::ids, "Module ids, (n,) uint32")
+      .def_property_readonly("colors", &Scene::colors, "Module colours, (n, 3) uint8 RGB")
+      .def_property_readonly("orientations", &Scene::orientations,
+                             "Orientation codes 0..23, (n,) uint8")
+      .def_property_readonly("grid", &Scene::grid, "The grid size (x, y, z), or None")
+      .def_property_readonly("name", &Scene::name)
+      .def_property_readonly("targets", &Scene::targets,
+                             "The cells of each target shape, (k, 3) int32 each")
+      .def("add", &Scene::add, py::arg("cell"), py::arg("orientation") = 0,
+           py::arg("color") = std::tuple{128, 128, 128},
+           "Add a module at a free cell inside the world; returns its id")
+      .def("remove", &Scene::remove, py::arg("id"))
+      .def("move", &Scene::move, py::arg("id"), py::arg("cell"),
+           "Put a module at another cell (no motion rule is asked: the scene is edited)")
+      .def("module_at", &Scene::moduleAt, py::arg("cell"), "The id of the module there, or None")
+      .def("free_surface_cells", &Scene::freeSurfaceCells,
+           "Empty cells inside the world next to a module, (m, 3), sorted")
+      .def("save", &Scene::save, py::arg("path"),
+           "Write a .json or VisibleSim .xml file (the XML with a grid VisibleSim can open)")
+      .def("copy", &Scene::copy)
+      .def("__repr__", &Scene::repr);
+
+  module.def(
+      "load_scene",
+      [](const std::filesystem::path& path) { return Scene(app::unwrap(io::readScene(path))); },
+      py::arg("path"), "Read a .json or VisibleSim .xml scene file");
+  module.def(
+      "box",
+      [](const py::object& size, const py::object& origin, bool upright) {
+        scene::BoxOptions options;
+        options.origin = cellArgument(origin, "--origin");
+        options.upright = upright;
+        const geometry::Cell cells = cellArgument(size, "--size");
+        return sceneOf(app::unwrap(scene::box(cells, options)),
+                       fmt::format("box {}x{}x{}", cells.x, cells.y, cells.z));
+      },
+      py::arg("size"), py::arg("origin") = py::make_tuple(0, 0, 0), py::arg("upright") = false,
+      "A box of modules (generate box)");
+  module.def(
+      "arch",
+      [](int hole) {
+        return sceneOf(app::unwrap(scene::paperArch(hole)),
+                       fmt::format("paper arch, hole {} high", hole));
+      },
+      py::arg("hole") = 2, "The paper's scene with an arch whose hole is 2 or 1 high");
+  module.def(
+      "random_scene",
+      [](size_t count, uint64_t seed, const py::object& grid) {
+        scene::RandomOptions options;
+        options.gridSize = optionalCell(grid, "--grid");
+        return sceneOf(app::unwrap(scene::random(seed, count, options)),
+                       fmt::format("random, {} modules, seed {}", count, seed));
+      },
+      py::arg("count"), py::arg("seed") = 1, py::arg("grid") = py::none(),
+      "A random connected scene (generate random)");
+  module.def("reach", &reach, py::arg("scene"), py::arg("goal"), py::arg("start") = py::none(),
+             py::arg("rules") = "paper", py::arg("attachment") = true,
+             py::arg("connectivity") = false);
+  module.def("moves_json", &moves, py::arg("scene"), py::arg("at"), py::arg("rules") = "paper",
+             py::arg("attachment") = true);
+  module.def("run", &run, py::arg("scene"), py::arg("program"), py::arg("options"));
+  module.def("geometry", &geometryOf, py::arg("radius") = 1.0, py::arg("thickness") = 0.0,
+             py::arg("fraction") = py::none());
+}

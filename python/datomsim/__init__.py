@@ -1,0 +1,149 @@
+"""datomsim from Python: scenes, distance maps, motions and runs of Datoms in the FCC lattice.
+
+The same C++ core as the ``datomsim`` command line (docs/python.md): a run gives the JSON
+``datomsim run --out`` gives, a refusal raises :class:`Error` with the command line's message.
+
+>>> import datomsim
+>>> scene = datomsim.arch(hole=2)
+>>> result = datomsim.reach(scene, goal=(6, 5, 2), start=(0, 0, 2))
+>>> len(result.cells), result.start_distance
+(145, 7)
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from dataclasses import dataclass
+from typing import Any, Mapping, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _core
+from ._core import CheckFailed, Error, Scene, load_scene
+
+__all__ = [
+    "CheckFailed",
+    "Error",
+    "Reach",
+    "Scene",
+    "arch",
+    "box",
+    "geometry",
+    "load_scene",
+    "moves",
+    "random_scene",
+    "reach",
+    "run",
+]
+
+Cell = Union[Sequence[int], str]
+
+GOAL = (6, 5, 2)
+"""The paper's goal cell G."""
+START = (0, 0, 2)
+"""The paper's start cell."""
+
+
+def box(size: Cell, origin: Cell = (0, 0, 0), upright: bool = False) -> Scene:
+    """A box of ``size`` (x, y, z) modules, as ``datomsim generate box``."""
+    return _core.box(size, origin, upright)
+
+
+def arch(hole: int = 2) -> Scene:
+    """The paper's scene: a box with an arch whose hole is ``hole`` (2 or 1) layers high."""
+    return _core.arch(hole)
+
+
+def random_scene(count: int, seed: int = 1, grid: Optional[Cell] = None) -> Scene:
+    """A random connected scene of ``count`` modules from ``seed``, as ``generate random``."""
+    return _core.random_scene(count, seed, grid)
+
+
+@dataclass(frozen=True)
+class Reach:
+    """Distances in motions from every reachable cell to a goal (the paper's gradient)."""
+
+    goal: tuple
+    cells: np.ndarray  # (n, 3) int32, sorted by x, then y, then z
+    distances: np.ndarray  # (n,) int32, motions from each cell to the goal
+    path: np.ndarray  # (p, 3) int32: start to goal, empty without a start
+
+    @property
+    def start_distance(self) -> Optional[int]:
+        """Motions from the start to the goal, or None without a start (or when unreachable)."""
+        if len(self.path) == 0:
+            return None
+        return len(self.path) - 1
+
+    def distance_at(self, cell: Sequence[int]) -> Optional[int]:
+        """The distance of one cell, or None when it is not reachable."""
+        hits = np.nonzero((self.cells == np.asarray(cell, dtype=np.int32)).all(axis=1))[0]
+        return int(self.distances[hits[0]]) if len(hits) else None
+
+
+def reach(
+    scene: Scene,
+    goal: Cell,
+    start: Optional[Cell] = None,
+    rules: str = "paper",
+    attachment: bool = True,
+    connectivity: bool = False,
+) -> Reach:
+    """The distances to ``goal`` and, with a ``start``, the path, as ``datomsim reach``.
+
+    The mobile is chosen as ``run`` chooses it (the module at the start, else the one at the goal
+    moved to the start) and is not part of the fixed world.
+    """
+    out = _core.reach(scene, goal, start, rules, attachment, connectivity)
+    return Reach(out["goal"], out["cells"], out["distances"], out["path"])
+
+
+def moves(scene: Scene, at: Cell, rules: str = "paper", attachment: bool = True) -> list:
+    """Every rule of every pivot around ``at``, valid or refused with its reason: the list of
+    ``datomsim moves --out``'s "moves"."""
+    return json.loads(_core.moves_json(scene, at, rules, attachment))["moves"]
+
+
+def run(
+    scene: Scene,
+    program: str,
+    *,
+    trace: Union[None, bool, str, os.PathLike] = None,
+    params: Optional[Mapping[str, Any]] = None,
+    **options: Any,
+) -> dict:
+    """Runs a module program on ``scene`` and returns what ``datomsim run --out`` writes.
+
+    Options are the command line's, with underscores: ``goal``, ``start``, ``seed``, ``rules``,
+    ``attachment``, ``connectivity``, ``delay_ms``, ``jitter_ms``, ``max_motions``, ``target``
+    (a scene file), ``timeout``, ``until`` (seconds), ``root`` (flood); ``params`` are the
+    program's parameters. ``trace`` is a file to write the trace to (its path is then in the
+    result under "trace"), or True to have the trace's text there.
+
+    A run that fails (the mobile does not arrive, the target is not built) is a result with its
+    "reason", as ``run --out`` writes it; bad options raise :class:`Error`.
+    """
+    if params is not None:
+        options["params"] = dict(params)
+    options["trace"] = trace is not None and trace is not False
+    text, trace_text, failure = _core.run(scene, program, options)
+    result = json.loads(text)
+    if isinstance(trace, (str, os.PathLike)):
+        path = os.fspath(trace)
+        partial = f"{path}.partial"
+        with open(partial, "w", encoding="utf-8") as file:
+            file.write(trace_text)
+        os.replace(partial, path)
+        result["trace"] = path
+    elif trace is True:
+        result["trace"] = trace_text
+    if failure is not None:
+        result.setdefault("reason", failure)
+    return result
+
+
+def geometry(radius: float = 1.0, thickness: float = 0.0, fraction: Optional[float] = None) -> dict:
+    """A Datom's dimensions (and its joint angles at a compression ``fraction``), as
+    ``datomsim geometry --json``."""
+    return _core.geometry(radius, thickness, fraction)

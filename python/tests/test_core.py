@@ -1,0 +1,140 @@
+"""The package against the command line: the same scenes, distances, moves and runs, the same
+messages for the same mistakes; the paper's experiment in a few lines."""
+
+import json
+
+import numpy as np
+import pytest
+
+import datomsim
+
+
+def test_the_papers_experiment_in_a_few_lines():
+    found = {}
+    for hole in (2, 1):
+        result = datomsim.reach(datomsim.arch(hole), goal=datomsim.GOAL, start=datomsim.START)
+        found[hole] = (len(result.cells), result.start_distance)
+    assert found == {2: (145, 7), 1: (144, 9)}
+
+
+def test_a_scenes_modules_are_numpy_arrays(scenes):
+    scene = datomsim.load_scene(scenes / "paper-arch-hole1.json")
+    # The paper's 130 modules and the mobile, which the file holds at G.
+    assert len(scene) == 131
+    assert scene.cells.shape == (131, 3) and scene.cells.dtype == np.int32
+    assert tuple(scene.cells[0]) == datomsim.GOAL
+    assert scene.ids.shape == (131,) and scene.colors.shape == (131, 3)
+    assert scene.orientations.dtype == np.uint8
+    assert scene.module_at(tuple(scene.cells[0])) == scene.ids[0]
+    assert scene.module_at((40, 40, 40)) is None
+
+
+def test_scenes_are_edited_and_saved_as_the_command_line_reads_them(tmp_path, cli):
+    scene = datomsim.box((3, 2, 1))
+    assert len(scene) == 6
+    surface = scene.free_surface_cells()
+    assert surface.shape[1] == 3 and len(surface) > 0
+    # Every free surface cell is empty and next to a module; adding at one makes a module there.
+    added = scene.add(tuple(surface[0]), orientation=0, color=(200, 10, 10))
+    assert scene.module_at(tuple(surface[0])) == added
+    assert tuple(scene.colors[-1]) == (200, 10, 10)
+    scene.move(added, tuple(surface[1]))
+    assert scene.module_at(tuple(surface[1])) == added
+    with pytest.raises(datomsim.Error, match="occupied|holds"):
+        scene.add(tuple(scene.cells[0]))
+    scene.remove(added)
+    assert len(scene) == 6
+    with pytest.raises(datomsim.Error):
+        scene.remove(added)
+
+    for name in ("box.json", "box.xml"):
+        scene.save(tmp_path / name)
+        info = cli("info", name, "--json")
+        assert info.returncode == 0, info.stderr
+        assert json.loads(info.stdout)["modules"] == 6
+        again = datomsim.load_scene(tmp_path / name)
+        assert (again.cells == scene.cells).all()
+
+
+def test_reach_gives_what_reach_out_writes(scenes, cli):
+    path = scenes / "paper-arch-hole1.json"
+    result = datomsim.reach(datomsim.load_scene(path), goal="6,5,2", start=(0, 0, 2))
+    written = cli("reach", path, "--goal", "6,5,2", "--start", "0,0,2", "--out", "-")
+    assert written.returncode == 0, written.stderr
+    expected = json.loads(written.stdout)
+    assert result.cells.tolist() == [d[:3] for d in expected["distances"]]
+    assert result.distances.tolist() == [d[3] for d in expected["distances"]]
+    assert result.path.tolist() == expected["path"]
+    assert result.distance_at((0, 0, 2)) == 9
+
+
+def test_moves_give_what_moves_out_writes(scenes, cli):
+    path = scenes / "paper-arch-hole1.json"
+    listed = datomsim.moves(datomsim.load_scene(path), at=(2, 2, 3))
+    written = cli("moves", path, "--at", "2,2,3", "--format", "json")
+    assert written.returncode == 0, written.stderr
+    assert listed == json.loads(written.stdout)["moves"]
+    assert any(move["valid"] for move in listed)
+    assert any(move["refusal"] for move in listed)
+
+
+@pytest.mark.parametrize(
+    "program, options, arguments",
+    [
+        ("follow-gradient", {"goal": (6, 5, 2), "start": (0, 0, 2), "seed": 3, "jitter_ms": 5},
+         ["--goal", "6,5,2", "--start", "0,0,2", "--seed", "3", "--jitter-ms", "5"]),
+        ("gradient", {"goal": (6, 5, 2)}, ["--goal", "6,5,2"]),
+        ("flood", {"root": (1, 1, 0)}, ["--root", "1,1,0"]),
+    ],
+)
+def test_run_gives_what_run_out_writes(scenes, cli, tmp_path, program, options, arguments):
+    path = scenes / "paper-arch-hole1.json"
+    trace = tmp_path / "python.jsonl"
+    result = datomsim.run(datomsim.load_scene(path), program, trace=trace, **options)
+    written = cli("run", path, "--program", program, *arguments, "--out", "-", "--trace", "cli.jsonl")
+    assert written.returncode == 0, written.stderr
+    expected = json.loads(written.stdout)
+    assert result.pop("trace") == str(trace)
+    assert result == expected
+    # The trace is the command line's but for its description, which names the scene.
+    ours, theirs = trace.read_text().splitlines(), (tmp_path / "cli.jsonl").read_text().splitlines()
+    assert ours[1:] == theirs[1:]
+
+
+def test_a_failed_run_is_a_result_with_its_reason():
+    # A mobile put in the air at 0,0,6 is latched to no module: it cannot follow the gradient.
+    result = datomsim.run(datomsim.arch(2), "follow-gradient", goal=(6, 5, 2), start=(0, 0, 6))
+    assert result["arrived"] is False
+    assert "latched to no module" in result["reason"]
+    assert result["path"][0] == [0, 0, 6]
+
+
+def test_mistakes_raise_the_command_lines_message(scenes, cli):
+    path = scenes / "paper-arch-hole1.json"
+    scene = datomsim.load_scene(path)
+    cases = [
+        (lambda: datomsim.reach(scene, goal=(0, 0, 8)), ["reach", path, "--goal", "0,0,8"]),
+        (lambda: datomsim.reach(scene, goal=(0, 0, -1)), ["reach", path, "--goal", "0,0,-1"]),
+        (lambda: datomsim.reach(scene, goal="6,5"), ["reach", path, "--goal", "6,5"]),
+        (lambda: datomsim.run(scene, "follow-gradient", goal=(6, 5, 2)),
+         ["run", path, "--program", "follow-gradient", "--goal", "6,5,2"]),
+        (lambda: datomsim.run(scene, "flood", params={"speed": "1"}),
+         ["run", path, "--program", "flood", "--param", "speed=1"]),
+        (lambda: datomsim.load_scene(path.parent / "no-such-scene.json"),
+         ["info", path.parent / "no-such-scene.json"]),
+    ]
+    for call, arguments in cases:
+        with pytest.raises(datomsim.Error) as raised:
+            call()
+        said = cli(*arguments)
+        assert said.returncode == 1
+        assert said.stderr.strip() == f"datomsim: error: {raised.value}", arguments
+    with pytest.raises(datomsim.Error, match="unknown option colour"):
+        datomsim.run(scene, "gradient", goal=(6, 5, 2), colour="red")
+
+
+def test_geometry_is_the_papers(cli):
+    ours = datomsim.geometry(radius=1.0, thickness=0.1, fraction=0.5)
+    written = cli("geometry", "--radius", "1", "--thickness", "0.1", "--fraction", "0.5", "--json")
+    assert ours == pytest.approx(json.loads(written.stdout))
+    assert ours["c"] == pytest.approx(2 / (3 * 2**0.5 - 1))

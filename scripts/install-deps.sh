@@ -12,6 +12,8 @@ packages=(
   clang libclang-rt-dev
   # The Python package (docs/python.md): its module, and what its tests and users import.
   pybind11-dev python3-dev python3-numpy python3-pytest
+  # Sweeps on a Dask cluster, their progress bar and their plots.
+  python3-distributed python3-tqdm python3-matplotlib
   # Shell completion is tested in both shells it is made for (docs/shell-completion.md).
   bash-completion zsh
 )

@@ -80,6 +80,7 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
   app::addDemoCommand(app);
   app::addViewCommand(app);
   app::addVideoCommand(app);
+  app::addSweepCommand(app);
   app::addMeshCommand(app);
   app::addCompletionCommand(app);
 

@@ -37,6 +37,7 @@ void addDemoCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addMeshCommand(CLI::App& app);
 void addVideoCommand(CLI::App& app);
+void addSweepCommand(CLI::App& app);
 
 // What `run` takes, as the command line spells it (cells "x,y,z", parameters "KEY=VALUE"); the
 // Python package fills the same from its keywords.
@@ -81,6 +82,20 @@ struct ReachOutput {
 ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
                          const std::optional<geometry::Cell>& start,
                          const motion::RuleOptions& options);
+
+// What `generate reshape CASE` takes, as the command line spells it.
+struct ReshapeArguments {
+  std::string kase, out, floor = "12,12";
+  int length = 8;
+  int modules = 20;
+  int side = 96;
+  int base = 0;
+  std::string seed = "1";
+};
+
+// The reconfiguration case `generate reshape` writes: its scene, whose first target is the shape
+// to build (docs/reconfiguration.md).
+io::Scene reshapeCase(const ReshapeArguments& args);
 
 // For `video` and `demo`: a count of frames on standard error when it is a terminal (none with
 // --quiet or in a log), and what a video holds for its "wrote" line.

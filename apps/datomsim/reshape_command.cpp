@@ -12,29 +12,18 @@
 namespace datomsim::app {
 namespace {
 
-struct ReshapeArguments {
-  std::string kase, out, floor = "12,12";
-  int length = 8;
-  int modules = 20;
-  int side = 96;
-  int base = 0;
-  std::string seed = "1";
-};
-
-void write(scene::ReshapeCase reshape, target::Target target, const std::string& out) {
+io::Scene sceneOf(scene::ReshapeCase reshape, target::Target target) {
   io::Scene scene;
   scene.world = std::move(reshape.world);
   scene.name = "reshape: " + reshape.description;
   scene.description = reshape.description;
   scene.targets.push_back(std::move(target));
-  declareGridForVisibleSim(scene, out);
-  check(io::writeScene(scene, out));
-  reportWritten(out, fmt::format("{} modules; {}", scene.world.size(), reshape.description));
+  return scene;
 }
 
 // A heap in the floor's corner into a cylinder in its middle, the target written in CSG: the
 // floor's slab and the cylinder on top (docs/file-formats.md explains how CSG maps to cells).
-void writeHeapToCylinder(int floorX, int floorY, const std::string& out) {
+io::Scene heapToCylinder(int floorX, int floorY) {
   const double radius = std::min(floorX, floorY) / 6.0;
   const std::string content =
       fmt::format("union() {{ cube([{},{},0.7]); translate([{:g},{:g},0.7]) cylinder(2.2,{:g}); }}",
@@ -49,10 +38,39 @@ void writeHeapToCylinder(int floorX, int floorY, const std::string& out) {
   scene::ReshapeCase reshape{unwrap(scene::heapOnFloor(floorX, floorY, onTop)), cells,
                              fmt::format("a heap of {} modules into a cylinder on a floor {} by {}",
                                          onTop, floorX, floorY)};
-  write(std::move(reshape), std::move(target), out);
+  return sceneOf(std::move(reshape), std::move(target));
 }
 
 }  // namespace
+
+io::Scene reshapeCase(const ReshapeArguments& args) {
+  const std::string& kase = args.kase;
+  auto floorSize = [&] {
+    const geometry::Cell size = parseCell("--floor", args.floor + ",1");
+    return std::pair{size.x, size.y};
+  };
+  if (kase == "heap") {
+    const auto [x, y] = floorSize();
+    return heapToCylinder(x, y);
+  }
+  if (kase != "arch2" && kase != "arch1" && kase != "line" && kase != "pyramid" &&
+      kase != "random") {
+    throw UsageError("case: " + kase + " not in {arch2,arch1,line,heap,random,pyramid}");
+  }
+  if (args.modules < 1 || args.modules > 10'000'000) {
+    throw UsageError(fmt::format("--modules: Value {} not in range [1 - 10000000]", args.modules));
+  }
+  scene::ReshapeCase reshape =
+      kase == "arch2"   ? unwrap(scene::archFromLayer(2))
+      : kase == "arch1" ? unwrap(scene::archFromLayer(1))
+      : kase == "line"  ? unwrap(scene::lineToBlock(args.length))
+      : kase == "pyramid"
+          ? unwrap(scene::cornerToPyramid(args.side, args.base))
+          : unwrap(scene::randomReshape(floorSize().first, floorSize().second, args.modules,
+                                        parseSeed("--seed", args.seed)));
+  target::Target target = unwrap(target::Target::grid(reshape.target));
+  return sceneOf(std::move(reshape), std::move(target));
+}
 
 void addReshapeGenerator(CLI::App& generate) {
   auto args = std::make_shared<ReshapeArguments>();
@@ -77,25 +95,11 @@ void addReshapeGenerator(CLI::App& generate) {
       ->check(CLI::Range(1, 10000));
   addExample(*command, "generate reshape heap -o heap.json");
   command->callback([args] {
-    const std::string& kase = args->kase;
-    auto floorSize = [&] {
-      const geometry::Cell size = parseCell("--floor", args->floor + ",1");
-      return std::pair{size.x, size.y};
-    };
-    if (kase == "heap") {
-      const auto [x, y] = floorSize();
-      return writeHeapToCylinder(x, y, args->out);
-    }
-    scene::ReshapeCase reshape =
-        kase == "arch2"   ? unwrap(scene::archFromLayer(2))
-        : kase == "arch1" ? unwrap(scene::archFromLayer(1))
-        : kase == "line"  ? unwrap(scene::lineToBlock(args->length))
-        : kase == "pyramid"
-            ? unwrap(scene::cornerToPyramid(args->side, args->base))
-            : unwrap(scene::randomReshape(floorSize().first, floorSize().second, args->modules,
-                                          parseSeed("--seed", args->seed)));
-    target::Target target = unwrap(target::Target::grid(reshape.target));
-    write(std::move(reshape), std::move(target), args->out);
+    io::Scene scene = reshapeCase(*args);
+    declareGridForVisibleSim(scene, args->out);
+    check(io::writeScene(scene, args->out));
+    reportWritten(args->out, fmt::format("{} modules; {}", scene.world.size(),
+                                         scene.description.value_or("")));
   });
 }
 

@@ -409,6 +409,28 @@ PYBIND11_MODULE(_core, module) {
       },
       py::arg("count"), py::arg("seed") = 1, py::arg("grid") = py::none(),
       "A random connected scene (generate random)");
+  module.def(
+      "reshape",
+      [](const std::string& kase, int length, const py::object& floor, int modules, uint64_t seed,
+         int side, int base) {
+        app::ReshapeArguments args;
+        args.kase = kase;
+        args.length = length;
+        const geometry::Cell size = cellArgument(
+            py::isinstance<py::str>(floor)
+                ? floor
+                : py::object(py::make_tuple(floor[py::int_(0)], floor[py::int_(1)], 1)),
+            "--floor");
+        args.floor = fmt::format("{},{}", size.x, size.y);
+        args.modules = modules;
+        args.seed = std::to_string(seed);
+        args.side = side;
+        args.base = base;
+        return Scene(app::reshapeCase(args));
+      },
+      py::arg("case"), py::arg("length") = 8, py::arg("floor") = py::make_tuple(12, 12),
+      py::arg("modules") = 20, py::arg("seed") = 1, py::arg("side") = 96, py::arg("base") = 0,
+      "A reconfiguration case (generate reshape): its scene, the shape to build as its target");
   module.def("reach", &reach, py::arg("scene"), py::arg("goal"), py::arg("start") = py::none(),
              py::arg("rules") = "paper", py::arg("attachment") = true,
              py::arg("connectivity") = false);

@@ -34,7 +34,9 @@ __all__ = [
     "moves",
     "random_scene",
     "reach",
+    "reshape",
     "run",
+    "sweep",
 ]
 
 Cell = Union[Sequence[int], str]
@@ -58,6 +60,22 @@ def arch(hole: int = 2) -> Scene:
 def random_scene(count: int, seed: int = 1, grid: Optional[Cell] = None) -> Scene:
     """A random connected scene of ``count`` modules from ``seed``, as ``generate random``."""
     return _core.random_scene(count, seed, grid)
+
+
+def reshape(
+    case: str,
+    *,
+    length: int = 8,
+    floor: Sequence[int] = (12, 12),
+    modules: int = 20,
+    seed: int = 1,
+    side: int = 96,
+    base: int = 0,
+) -> Scene:
+    """A reconfiguration case, as ``generate reshape CASE``: arch2, arch1, line (``length``),
+    heap (``floor``), random (``floor``, ``modules``, ``seed``) or pyramid (``side``, ``base``).
+    The scene's first target is the shape ``run(scene, "reconfigure")`` builds."""
+    return _core.reshape(case, length, floor, modules, seed, side, base)
 
 
 @dataclass(frozen=True)
@@ -147,3 +165,11 @@ def geometry(radius: float = 1.0, thickness: float = 0.0, fraction: Optional[flo
     """A Datom's dimensions (and its joint angles at a compression ``fraction``), as
     ``datomsim geometry --json``."""
     return _core.geometry(radius, thickness, fraction)
+
+
+def sweep(spec, out=None, **options) -> list:
+    """Every combination of a spec's scenes, programs, parameters and seeds, one row per run
+    (datomsim.sweeps.sweep; docs/python.md, "Sweeps")."""
+    from .sweeps import sweep as run_sweep
+
+    return run_sweep(spec, out, **options)

@@ -81,3 +81,24 @@ print(f"surface-walker: 10 walkers, {finished} made their 25 steps (the others g
       f"{runs['1a']['max_concurrent_motions']} motions at once; {refused} refusals met and handled "
       f"(seed 1); the same seed, the same trace")
 PY
+
+# The Python package from the prefix, as docs/python.md installs it: imported outside the tree,
+# and found by the installed `datomsim sweep`.
+if package="$(ls -d "$prefix"/lib*/python3/dist-packages 2> /dev/null)" &&
+  [[ -f "$package/datomsim/__init__.py" ]]; then
+  (cd "$work" && PYTHONPATH="$package" /usr/bin/python3 - "$package" << 'PY'
+import sys
+import datomsim
+assert datomsim.__file__.startswith(sys.argv[1]), datomsim.__file__
+found = [(len(datomsim.reach(datomsim.arch(h), goal=(6, 5, 2), start=(0, 0, 2)).cells)) for h in (2, 1)]
+assert found == [145, 144], found
+print(f"python: datomsim imported from the prefix; reach gives {found[0]} and {found[1]} cells")
+PY
+  )
+  printf '{"scenes": [{"generate": "arch", "hole": [1, 2]}], "programs": [{"program": "gradient", "goal": [6, 5, 2]}]}' > "$work/sweep.json"
+  "$datomsim" --quiet sweep "$work/sweep.json" -o "$work/sweep.csv" --workers 1
+  [[ "$(wc -l < "$work/sweep.csv")" == 3 ]] || { echo "the installed sweep wrote no rows" >&2; exit 1; }
+  echo "python: the installed datomsim sweep ran 2 cases"
+else
+  echo "python: the package was not built, so not installed (docs/python.md)"
+fi

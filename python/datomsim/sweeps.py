@@ -29,13 +29,14 @@ from __future__ import annotations
 import argparse
 import csv
 import hashlib
+import importlib.util
 import itertools
 import json
 import os
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
-from typing import Any, Callable, Iterable, Iterator, Optional
+from typing import Any, Iterable, Iterator, Optional
 
 CELL_KEYS = {"size", "floor", "grid", "goal", "start", "root", "origin"}
 GENERATORS = {"box", "arch", "random", "reshape"}
@@ -226,15 +227,15 @@ def _done_cases(path: str) -> set[str]:
         return {row["case"] for row in csv.DictReader(file) if row.get("case")}
 
 
-def _progress(total: int, done: int, quiet: bool) -> Callable[[], None]:
+def _progress(total: int, done: int, quiet: bool):
+    """A progress bar (tqdm) on a terminal, else None."""
     if quiet or not sys.stderr.isatty():
-        return lambda: None
+        return None
     try:
         from tqdm import tqdm
     except ImportError:
-        return lambda: None
-    bar = tqdm(total=total, initial=done, unit="run", file=sys.stderr)
-    return bar.update
+        return None
+    return tqdm(total=total, initial=done, unit="run", file=sys.stderr)
 
 
 def _results(todo: list[dict], workers: Optional[int], scheduler: Optional[str],
@@ -278,12 +279,21 @@ def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None
     base = base or os.getcwd()
     all_cases = cases(spec)
     columns = _columns(all_cases)
+    parquet = None
+    if out is not None and out.endswith(".parquet"):
+        # Parquet is written whole at the end; the rows go to a CSV file beside it as they come,
+        # which is what a stopped sweep goes on from.
+        # pandas writes Parquet through pyarrow.
+        if importlib.util.find_spec("pyarrow") is None or importlib.util.find_spec("pandas") is None:
+            raise SpecError(f"{out}: Parquet needs pyarrow and pandas, which are not installed "
+                            "(Debian 12 has no pyarrow): write a .csv file")
+        parquet, out = out, out + ".csv"
     if out is not None and not out.endswith(".csv"):
-        raise SpecError(f"{out}: the results are a .csv file")
+        raise SpecError(f"{out}: the results are a .csv file (or .parquet with pyarrow)")
     done = _done_cases(out) if out else set()
     todo = [case for case in all_cases if case["case"] not in done]
     rows: list[dict] = []
-    advance = _progress(len(all_cases), len(all_cases) - len(todo), quiet)
+    bar = _progress(len(all_cases), len(all_cases) - len(todo), quiet)
     writer = None
     file = None
     if out is not None:
@@ -305,12 +315,21 @@ def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None
                 writer.writerow(row)
                 file.flush()
             rows.append(row)
-            advance()
+            if bar is not None:
+                bar.update()
     finally:
+        if bar is not None:
+            bar.close()
         if file is not None:
             file.close()
     if out is not None:
-        return read_rows(out)
+        rows = read_rows(out)
+    if parquet is not None:
+        import pandas
+
+        partial = parquet + ".partial"
+        pandas.DataFrame(rows, columns=columns).to_parquet(partial, index=False)
+        os.replace(partial, parquet)
     return rows
 
 
@@ -337,7 +356,7 @@ def main(argv: Optional[Iterable[str]] = None) -> int:
                     "one CSV row per run (docs/python.md)")
     parser.add_argument("spec", help="the sweep's spec, a JSON file")
     parser.add_argument("-o", "--out", required=True, help="the results, a .csv file (resumed "
-                        "when it exists)")
+                        "when it exists), or .parquet where pyarrow is installed")
     parser.add_argument("--workers", type=int, help="processes on this machine (default: every "
                         "core)")
     parser.add_argument("--scheduler", help="a Dask scheduler's address (tcp://host:8786) to run "

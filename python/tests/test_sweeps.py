@@ -2,10 +2,9 @@
 the command line's `datomsim sweep`, and the plot of the rows."""
 
 import csv
+import importlib.util
 import json
 import os
-import subprocess
-import sys
 
 import pytest
 
@@ -126,3 +125,16 @@ def test_the_plot_draws_success_and_makespan_against_the_module_count(tmp_path):
     assert len(rates.get_lines()) == 2  # max_motions none and 1
     figure.savefig(tmp_path / "sweep.png")
     assert (tmp_path / "sweep.png").stat().st_size > 10_000
+
+
+def test_parquet_is_written_where_pyarrow_is_and_refused_clearly_where_not(tmp_path):
+    out = tmp_path / "rows.parquet"
+    if importlib.util.find_spec("pyarrow") is None:
+        with pytest.raises(sweeps.SpecError, match="Parquet needs pyarrow"):
+            datomsim.sweep({**SPEC, "seeds": [1]}, str(out), workers=1)
+        assert not out.exists()
+        return
+    import pandas
+
+    rows = datomsim.sweep({**SPEC, "seeds": [1]}, str(out), workers=1)
+    assert len(pandas.read_parquet(out)) == len(rows) == 4

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "algorithms/registry.h"
 #include "arguments.h"
@@ -82,6 +84,11 @@ struct ReachOutput {
 ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
                          const std::optional<geometry::Cell>& start,
                          const motion::RuleOptions& options);
+
+// What `geometry --json` prints: a Datom's dimensions from r and t, and with a compression
+// fraction its joint angles.
+nlohmann::ordered_json geometryJson(double radius, double thickness,
+                                    const std::optional<double>& fraction);
 
 // What `generate reshape CASE` takes, as the command line spells it.
 struct ReshapeArguments {

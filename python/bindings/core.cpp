@@ -16,8 +16,6 @@
 
 #include "../../apps/datomsim/commands.h"
 #include "../../apps/datomsim/motion_json.h"
-#include "datom/dimensions.h"
-#include "datom/linkage.h"
 #include "geometry/cell_text.h"
 #include "geometry/lattice.h"
 #include "io/scene_file.h"
@@ -312,32 +310,12 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
           output.failure};
 }
 
-py::dict geometryOf(double radius, double thickness, const std::optional<double>& fraction) {
-  const datom::Dimensions d = app::unwrap(datom::dimensionsFor(radius, thickness));
-  py::dict out;
-  out["r"] = d.radius();
-  out["t"] = d.thickness();
-  out["c"] = d.connectorWidth();
-  out["e"] = d.linkLength();
-  out["a"] = d.amplitude();
-  out["r_prime"] = d.correctedRadius();
-  out["c_prime"] = d.correctedConnectorWidth();
-  out["e_prime"] = d.correctedLinkLength();
-  out["t_max"] = d.maxThickness();
-  out["core_edge"] = d.coreEdge();
-  if (fraction) {
-    if (!(*fraction >= 0 && *fraction <= 1)) {
-      throw UsageError(fmt::format("--fraction {}: a compression fraction in 0..1", *fraction));
-    }
-    const datom::Linkage linkage = app::unwrap(datom::solveLinkage(d, *fraction));
-    out["fraction"] = linkage.fraction;
-    out["travel"] = linkage.travel;
-    out["q0"] = linkage.angles.q0;
-    out["q1"] = linkage.angles.q1;
-    out["p0"] = linkage.angles.p0;
-    out["connector_turn"] = linkage.connectorTurn;
+// The JSON text of `geometry --json`; a fraction outside 0..1 refused as the option is.
+std::string geometryOf(double radius, double thickness, const std::optional<double>& fraction) {
+  if (fraction && !(*fraction >= 0 && *fraction <= 1)) {
+    throw UsageError(fmt::format("--fraction: Value {} not in range [0 - 1]", *fraction));
   }
-  return out;
+  return app::geometryJson(radius, thickness, fraction).dump();
 }
 
 }  // namespace

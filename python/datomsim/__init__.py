@@ -164,7 +164,7 @@ def run(
 def geometry(radius: float = 1.0, thickness: float = 0.0, fraction: Optional[float] = None) -> dict:
     """A Datom's dimensions (and its joint angles at a compression ``fraction``), as
     ``datomsim geometry --json``."""
-    return _core.geometry(radius, thickness, fraction)
+    return json.loads(_core.geometry(radius, thickness, fraction))
 
 
 def sweep(spec, out=None, **options) -> list:

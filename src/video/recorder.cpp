@@ -182,9 +182,8 @@ Result<OpenPage> openPage(const std::string& chromium, const std::filesystem::pa
   const std::filesystem::path log = scratch / "chromium.log";
   Result<ChildProcess> started = ChildProcess::start(argv, {.devtoolsPipes = true, .log = log});
   if (!started) return Error{started.error()};
-  OpenPage open{std::move(*started), DevTools(-1, -1, std::chrono::seconds(60)), ""};
-  open.devtools =
-      DevTools(open.browser.commandsFd(), open.browser.repliesFd(), std::chrono::seconds(60));
+  const int commands = started->commandsFd(), replies = started->repliesFd();
+  OpenPage open{std::move(*started), DevTools(commands, replies, std::chrono::seconds(60)), ""};
   const auto failed = [&](const std::string& what) -> Result<OpenPage> {
     return Error{fmt::format("Chromium ({}): {}{}", chromium, what, logTail(log))};
   };
@@ -353,38 +352,32 @@ Result<VideoSummary> recordVideo(const VideoRequest& request) {
     std::error_code ignored;
     std::filesystem::remove(partial, ignored);
   };
-  const auto encoderFailed = [&](const std::string& what) -> Result<VideoSummary> {
+  // Every failure from here on stops the encoder and leaves no partial file.
+  const auto stop = [&](std::string message) -> Result<VideoSummary> {
     encoder->kill();
     removePartial();
-    return Error{fmt::format("ffmpeg {}{}", what, logTail(encoderLog))};
+    return Error{std::move(message)};
   };
 
   std::string lastKey, lastPicture;
   for (size_t k = 0; k < frameCalls.size(); ++k) {
     auto key = open.devtools.evaluate(frameCalls[k], open.session);
-    if (!key) {
-      encoder->kill();
-      removePartial();
-      return Error{key.error()};
-    }
+    if (!key) return stop(key.error());
     const std::string name = key->is_string() ? key->get<std::string>() : key->dump();
     if (k == 0 || name != lastKey) {
       auto shot = open.devtools.call("Page.captureScreenshot",
                                      {{"format", "jpeg"}, {"quality", 92}, {"fromSurface", true}},
                                      open.session);
-      if (!shot) {
-        encoder->kill();
-        removePartial();
-        return Error{shot.error()};
-      }
+      if (!shot) return stop(shot.error());
       auto picture = decodeBase64((*shot)["data"].get<std::string>());
-      if (!picture) return encoderFailed("got no picture: " + picture.error());
+      if (!picture) return stop("the browser sent no picture: " + picture.error());
       lastPicture = std::move(*picture);
       lastKey = name;
       ++summary.drawn;
     }
     if (Status written = encoder->writeInput(lastPicture); !written) {
-      return encoderFailed("stopped taking frames (" + written.error() + ")");
+      return stop(
+          fmt::format("ffmpeg stopped taking frames ({}){}", written.error(), logTail(encoderLog)));
     }
     if (request.progress) request.progress(int(k + 1), summary.frames);
   }

@@ -53,6 +53,9 @@ class ContextAdapter final : public Context {
     }
     return context_.send(connector, message);
   }
+  int sendToAll(const Message& message, int except) override {
+    return context_.sendToAll(message, except);
+  }
   Status compress(int piston) override {
     if (piston < 0 || piston >= 6) {
       return Error{

@@ -57,6 +57,19 @@ class ModuleContext {
   // Sends a message through one of the module's own connectors. Refused, with a reason, when the
   // connector is not latched; the message arrives after the simulation's message delay.
   virtual Status send(int ownConnector, const Message& message) = 0;
+  // Sends through every latched connector but `exceptConnector` (-1: none), in connector order;
+  // returns how many were sent. The same as one send() each.
+  virtual int sendToAll(const Message& message, int exceptConnector) {
+    const uint16_t latches = latchedConnectors();
+    int sent = 0;
+    for (int connector = 0; connector < 12; ++connector) {
+      if (connector != exceptConnector && ((latches >> connector) & 1) &&
+          send(connector, message).ok()) {
+        ++sent;
+      }
+    }
+    return sent;
+  }
 
   // Compresses one of the module's own pistons, or releases the compressed one. Refused when
   // another piston is compressed or moving, when the module is in a motion or has one queued,

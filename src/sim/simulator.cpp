@@ -72,6 +72,9 @@ class Simulator::Context final : public program::ModuleContext {
   Status send(int ownConnector, const Message& message) override {
     return simulator_.transport_.send(index_, ownConnector, message);
   }
+  int sendToAll(const Message& message, int exceptConnector) override {
+    return simulator_.transport_.sendToAll(index_, exceptConnector, message);
+  }
   Status compress(int ownPiston) override { return simulator_.compress(index_, ownPiston); }
   Status release() override { return simulator_.release(index_); }
   int compressedPiston() const override { return simulator_.mechanics_.pistons(index_).piston; }

@@ -1,5 +1,7 @@
 #include "sim/transport.h"
 
+#include <array>
+
 #include <fmt/format.h>
 
 #include "geometry/lattice.h"
@@ -43,13 +45,59 @@ Status Transport::send(uint32_t index, int ownConnector, const Message& message)
     partner = uint32_t(neighbour - world_.modules().data());
     partnerConnector = neighbour->orientation.ownConnector(geometry::oppositeDirection(direction));
   }
+  deliver(module, partner, partnerConnector, message);
+  return Ok{};
+}
+
+int Transport::sendToAll(uint32_t index, int exceptConnector, const Message& message) {
+  const Module& module = world_.modules()[index];
+  uint16_t connectors = module.latches;
+  if (exceptConnector >= 0 && exceptConnector < geometry::kDirectionCount) {
+    connectors &= uint16_t(~(1u << exceptConnector));
+  }
+  int sent = 0;
+  if (motions_.activeCount() > 0 && motions_.inMotion(index)) {
+    // Across a hinge the partner is the motion's, not the facing cell's: one send() each.
+    for (int connector = 0; connector < geometry::kDirectionCount; ++connector) {
+      if (((connectors >> connector) & 1) && send(index, connector, message).ok()) ++sent;
+    }
+    return sent;
+  }
+  // Every receiver is looked up before any is scheduled: the lookups do not depend on one
+  // another, so the processor waits for their cache misses together, not one after the other.
+  std::array<const Module*, geometry::kDirectionCount> partners{};
+  std::array<int, geometry::kDirectionCount> directions{};
+  int count = 0;
+  for (int connector = 0; connector < geometry::kDirectionCount; ++connector) {
+    if (!((connectors >> connector) & 1)) continue;
+    directions[count] = module.orientation.worldDirection(connector);
+    partners[count] = world_.neighbour(module, directions[count]);
+    ++count;
+  }
+  std::array<int, geometry::kDirectionCount> partnerConnectors{};
+  for (int i = 0; i < count; ++i) {
+    if (partners[i]) {
+      partnerConnectors[i] =
+          partners[i]->orientation.ownConnector(geometry::oppositeDirection(directions[i]));
+    }
+  }
+  // Then in connector order, as one send() each would: the same jitter draws, the same events.
+  for (int i = 0; i < count; ++i) {
+    if (!partners[i]) continue;  // a latch with nothing behind it: send() refuses it too
+    deliver(module, uint32_t(partners[i] - world_.modules().data()), partnerConnectors[i], message);
+    ++sent;
+  }
+  return sent;
+}
+
+void Transport::deliver(const Module& sender, uint32_t partner, int partnerConnector,
+                        const Message& message) {
   Time delay = times_.delay;
   if (times_.jitter > 0) delay += random_.between(0, times_.jitter);
   const Time arrival = agenda_.now() + delay;
-  announce_(&Observer::messageSent, agenda_.now(), module.id, world_.modules()[partner].id, message,
+  announce_(&Observer::messageSent, agenda_.now(), sender.id, world_.modules()[partner].id, message,
             arrival);
   agenda_.schedule(arrival, EventKind::kMessage, partner, partnerConnector, message);
-  return Ok{};
 }
 
 void Transport::received(const Event& event) const {

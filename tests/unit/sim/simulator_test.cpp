@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <functional>
+#include <tuple>
 
 #include "geometry/lattice.h"
 #include "support/scripted_program.h"
@@ -66,6 +68,57 @@ TEST(Simulator, AMessageArrivesAfterTheDelayThroughTheFacingConnector) {
   EXPECT_EQ(arrival, 7 * kMillisecond);
   EXPECT_EQ(arrivedThrough, geometry::Orientation::fromCode(9)->ownConnector(6));
   EXPECT_EQ(simulator.statistics().messagesByType.at("Ping"), 1u);
+}
+
+// What each module heard: (time, receiver, its connector, hops).
+using Heard = std::vector<std::tuple<Time, ModuleId, int, int32_t>>;
+
+// Module 1 at the centre of a turned neighbourhood tells its latched neighbours but one, either
+// through sendToAll or with one send() each; the rest only listen.
+Heard tellNeighbours(bool all, int* sentCount) {
+  std::map<uint32_t, Script> programs;
+  Heard heard;
+  const int except = 3;
+  programs[1].start = [&](ModuleContext& c) {
+    if (all) {
+      *sentCount = c.sendToAll(Message::of(Ping{1}), except);
+      return;
+    }
+    *sentCount = 0;
+    for (int connector = 0; connector < 12; ++connector) {
+      if (connector != except && c.send(connector, Message::of(Ping{1})).ok()) ++*sentCount;
+    }
+  };
+  for (uint32_t id = 2; id <= 8; ++id) {
+    programs[id].message = [&heard](ModuleContext& c, int connector, const Message& m) {
+      heard.emplace_back(c.now(), c.id(), connector, m.as<Ping>()->hops);
+    };
+  }
+  SimulationOptions options;
+  options.messageDelay = 5 * kMillisecond;
+  options.messageJitter = 3 * kMillisecond;  // the same draws, in the same order, or not
+  WorldBuilder world;
+  const Cell centre{1, 1, 1};
+  world.module(centre, 5);
+  const std::array<int, 7> orientations = {0, 9, 3, 17, 22, 1, 12};
+  for (int d = 0; d < 7; ++d)
+    world.module(centre + geometry::neighbourOffset(2 * d % 12 + d / 6), orientations[size_t(d)]);
+  Simulator simulator(world.build(), table(), options);
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  EXPECT_TRUE(simulator.run().ok());
+  return heard;
+}
+
+TEST(Simulator, SendingToAllIsTheSameAsOneSendEach) {
+  int sentByAll = -1, sentOneByOne = -1;
+  const Heard all = tellNeighbours(true, &sentByAll);
+  const Heard oneByOne = tellNeighbours(false, &sentOneByOne);
+  // Seven neighbours, all latched; the excepted connector faces one of them or none.
+  EXPECT_GE(sentByAll, 6);
+  EXPECT_EQ(sentByAll, sentOneByOne);
+  EXPECT_EQ(all.size(), size_t(sentByAll));
+  EXPECT_EQ(all, oneByOne);
 }
 
 TEST(Simulator, EventsAtTheSameTimeRunInTheOrderTheyWereScheduled) {

@@ -80,4 +80,49 @@ motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string
   return options;
 }
 
+std::string describe(const MotionModel& model) {
+  if (model.kind == world::ModuleKind::kCatom3D) {
+    return fmt::format("catom3d, {} rolls", catom3d::toString(model.rolling));
+  }
+  return fmt::format("rules {}, attachment {}", motion::toString(model.datom.rules),
+                     model.datom.attachment ? "on" : "off");
+}
+
+void ModuleArguments::addTo(CLI::App& command) {
+  command_ = &command;
+  command
+      .add_option("--module", module,
+                  "The module whose motions apply: datom or catom3d (default: the scene "
+                  "file's, datom when it names none)")
+      ->check(CLI::IsMember({"datom", "catom3d"}));
+  command
+      .add_option("--rolling", rolling,
+                  "The 3D Catom's rules: symmetric (VisibleSim's cells and those of the roll "
+                  "played backwards) or visiblesim (VisibleSim's checks exactly)")
+      ->check(CLI::IsMember({"symmetric", "visiblesim"}))
+      ->capture_default_str();
+}
+
+MotionModel ModuleArguments::modelFor(const io::Scene& scene, const RuleArguments& rules) const {
+  MotionModel model;
+  model.kind = module.empty() ? scene.moduleKind : *world::moduleKindNamed(module);
+  model.datom = rules.options();
+  model.rolling = *catom3d::rollRulesNamed(rolling);
+  const auto given = [&](const char* option) { return command_ && command_->count(option) > 0; };
+  if (model.kind == world::ModuleKind::kCatom3D) {
+    for (const char* option : {"--rules", "--attachment", "--connectivity"}) {
+      if (given(option)) {
+        throw UsageError(fmt::format(
+            "{} is a Datom rule option; the modules here are 3D Catoms, whose rolls take "
+            "--rolling (or say --module datom)",
+            option));
+      }
+    }
+  } else if (given("--rolling")) {
+    throw UsageError(
+        "--rolling is the 3D Catom's; the modules here are Datoms (say --module catom3d)");
+  }
+  return model;
+}
+
 }  // namespace datomsim::app

@@ -7,8 +7,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "catom3d/rolling.h"
 #include "geometry/cell.h"
+#include "io/scene.h"
 #include "motion/motion.h"
+#include "world/module_kind.h"
 
 namespace datomsim::app {
 
@@ -57,6 +60,32 @@ struct RuleArguments {
         ->capture_default_str();
   }
   motion::RuleOptions options() const { return parseRuleOptions(rules, attachment, connectivity); }
+};
+
+// Which module's motions a command applies, and their options: the Datom's rules, or the 3D
+// Catom's rolls (docs/catom3d.md).
+struct MotionModel {
+  world::ModuleKind kind = world::ModuleKind::kDatom;
+  motion::RuleOptions datom;
+  catom3d::RollRules rolling = catom3d::RollRules::kSymmetric;
+};
+
+// "datom, rules paper, attachment on" or "catom3d, symmetric rolls": what pictures and
+// reports name.
+std::string describe(const MotionModel& model);
+
+// --module and --rolling, beside the RuleArguments: the module is the scene file's unless
+// --module names one. The Datom's rule options and --rolling each apply to one kind only: given
+// with the other, they are refused (what the run would do is not what was asked).
+struct ModuleArguments {
+  std::string module;  // empty: the scene's kind
+  std::string rolling = "symmetric";
+
+  void addTo(CLI::App& command);
+  MotionModel modelFor(const io::Scene& scene, const RuleArguments& rules) const;
+
+ private:
+  CLI::App* command_ = nullptr;
 };
 
 }  // namespace datomsim::app

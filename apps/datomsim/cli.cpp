@@ -76,6 +76,7 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
   app::addGeometryCommand(app);
   app::addSceneCommands(app);
   app::addMotionCommands(app);
+  app::addCompareCommand(app);
   app::addRunCommand(app, programs);
   app::addDemoCommand(app);
   app::addViewCommand(app);

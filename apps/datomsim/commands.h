@@ -33,6 +33,7 @@ void addSceneCommands(CLI::App& app);  // generate, convert, info
 // generate reshape CASE: the reconfiguration cases.
 void addReshapeGenerator(CLI::App& generate);
 void addMotionCommands(CLI::App& app);  // reach, moves, verify
+void addCompareCommand(CLI::App& app);  // the Datom and the 3D Catom on one scene
 // `run`, with the programs a researcher's executable adds (they outlive the command line).
 void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added = {});
 void addDemoCommand(CLI::App& app);
@@ -81,9 +82,13 @@ struct ReachOutput {
   motion::DistanceMap map;
   std::vector<geometry::Cell> path;
 };
+// The scene's own module kind with the Datom's rule options (what the Python package asks),
+// or any motion model.
 ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
                          const std::optional<geometry::Cell>& start,
                          const motion::RuleOptions& options);
+ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
+                         const std::optional<geometry::Cell>& start, const MotionModel& model);
 
 // What `geometry --json` prints: a Datom's dimensions from r and t, and with a compression
 // fraction its joint angles.

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "arguments.h"
+#include "catom3d/rolling_reach.h"
 #include "commands.h"
 #include "experiment/run.h"
 #include "geometry/lattice.h"
@@ -20,9 +21,24 @@
 namespace datomsim::app {
 namespace {
 
-std::string ruleLabel(const motion::RuleOptions& options) {
-  return fmt::format("rules {}, attachment {}", motion::toString(options.rules),
-                     options.attachment ? "on" : "off");
+// Theorem 2 for rolls, for each rule set asked.
+void verifyRolls(const world::World& world, const std::vector<std::string>& ruleSets) {
+  const catom3d::RollTable table;
+  size_t failures = 0;
+  for (const std::string& name : ruleSets) {
+    const MotionModel model{world::ModuleKind::kCatom3D, {}, *catom3d::rollRulesNamed(name)};
+    const auto report = catom3d::checkBidirectionality(world, table, model.rolling);
+    fmt::print("{}: {} cells, {} motions, {} counterexamples\n", describe(model),
+               report.cellsChecked, report.motionsChecked, report.counterexamples.size());
+    for (const auto& counterexample : report.counterexamples) {
+      const catom3d::RollMotion& m = counterexample.forward;
+      fmt::print("  {} -> {} (roll about pivot {} through the {} face) has no way back\n",
+                 geometry::toString(m.from), geometry::toString(m.goal), m.pivot.value,
+                 catom3d::toString(m.roll->face));
+    }
+    failures += report.counterexamples.size();
+  }
+  if (failures > 0) throw CheckFailed(fmt::format("{} counterexamples to theorem 2", failures));
 }
 
 void addReach(CLI::App& app) {
@@ -30,6 +46,7 @@ void addReach(CLI::App& app) {
     std::string scene, goal, start, out;
     PictureRequest pictures;
     RuleArguments rules;
+    ModuleArguments module;
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand(
@@ -41,6 +58,7 @@ void addReach(CLI::App& app) {
                       "Also follow the gradient from this cell and draw the path; the mobile is "
                       "the module there, else the one at the goal (as for run)");
   args->rules.addTo(*command);
+  args->module.addTo(*command);
   addOutputOption(*command, args->out);
   PictureRequest& asked = args->pictures;
   command->add_option("--png", asked.png, "Write the distance map as a PNG picture");
@@ -85,17 +103,18 @@ void addReach(CLI::App& app) {
       }
     }
     const geometry::Cell goal = parseCell("--goal", args->goal);
-    const motion::RuleOptions options = args->rules.options();
     const std::optional<geometry::Cell> start =
         args->start.empty() ? std::nullopt : std::optional(parseCell("--start", args->start));
-    const ReachOutput reached =
-        reachOnScene(unwrap(io::readScene(args->scene)), goal, start, options);
+    io::Scene scene = unwrap(io::readScene(args->scene));
+    const MotionModel model = args->module.modelFor(scene, args->rules);
+    const ReachOutput reached = reachOnScene(std::move(scene), goal, start, model);
     const std::string title = fmt::format("{}: distances to {} ({})", args->scene,
-                                          geometry::toString(goal), ruleLabel(options));
+                                          geometry::toString(goal), describe(model));
     writePictures(reached.fixed, reached.mobileTakenOut, reached.map, reached.path, title,
                   pictures);
-    writeOutput(args->out,
-                [&](std::FILE* file) { return writeReachJson(reached.map, reached.path, file); });
+    writeOutput(args->out, [&](std::FILE* file) {
+      return writeReachJson(reached.map, reached.path, model, file);
+    });
   });
 }
 
@@ -103,6 +122,7 @@ void addMoves(CLI::App& app) {
   struct Arguments {
     std::string scene, at, out, format = "auto";
     RuleArguments rules;
+    ModuleArguments module;
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand(
@@ -111,6 +131,7 @@ void addMoves(CLI::App& app) {
   command->add_option("--at", args->at, "The mobile's cell x,y,z; a module there is the mobile")
       ->required();
   args->rules.addTo(*command);
+  args->module.addTo(*command);
   command
       ->add_option("--format", args->format,
                    "table (for a person), json, or auto: a table on a terminal, JSON otherwise "
@@ -129,10 +150,17 @@ void addMoves(CLI::App& app) {
     }
     const world::Module* mobile = scene.world.moduleAt(at);
     const motion::Mobile where{at, mobile ? std::optional(mobile->id) : std::nullopt};
-    const motion::RuleTable table;
-    const auto moves = motion::evaluateAll(scene.world, table, where, args->rules.options());
+    const MotionModel model = args->module.modelFor(scene, args->rules);
     const bool toTerminal = (args->out.empty() || args->out == "-") && isatty(fileno(stdout));
     const bool asTable = args->format == "table" || (args->format == "auto" && toTerminal);
+    if (model.kind == world::ModuleKind::kCatom3D) {
+      const catom3d::RollTable table;
+      const auto rolls = catom3d::evaluateAll(scene.world, table, where, model.rolling);
+      writeOutput(args->out, asTable ? rollsTable(at, rolls, model) : rollsJson(at, rolls, model));
+      return;
+    }
+    const motion::RuleTable table;
+    const auto moves = motion::evaluateAll(scene.world, table, where, model.datom);
     writeOutput(args->out, asTable ? movesTable(at, moves) : movesJson(at, moves));
   });
 }
@@ -142,6 +170,8 @@ void addVerify(CLI::App& app) {
     std::string scene;
     std::vector<std::string> rules = {"paper", "strict"};
     std::vector<std::string> attachment = {"on", "off"};
+    std::string module;
+    std::vector<std::string> rolling = {"symmetric"};
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand(
@@ -155,16 +185,43 @@ void addVerify(CLI::App& app) {
   command->add_option("--attachment", args->attachment, "Attachment settings to check")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  command
+      ->add_option("--module", args->module,
+                   "The module whose motions are checked: datom or catom3d (default: the scene "
+                   "file's)")
+      ->check(CLI::IsMember({"datom", "catom3d"}));
+  command
+      ->add_option("--rolling", args->rolling,
+                   "The 3D Catom's rule sets to check: symmetric, visiblesim (VisibleSim's own "
+                   "checks, which theorem 2 does not hold for)")
+      ->check(CLI::IsMember({"symmetric", "visiblesim"}))
+      ->capture_default_str();
   addExample(*command, "verify scenes/paper-arch-hole1.json");
-  command->callback([args] {
+  command->callback([args, command] {
     const io::Scene scene = unwrap(io::readScene(args->scene));
+    const world::ModuleKind kind =
+        args->module.empty() ? scene.moduleKind : *world::moduleKindNamed(args->module);
+    if (kind == world::ModuleKind::kCatom3D) {
+      if (command->count("--rules") || command->count("--attachment")) {
+        throw UsageError(
+            "--rules and --attachment are Datom rule options; the modules here are 3D Catoms "
+            "(their rule sets: --rolling)");
+      }
+      verifyRolls(scene.world, args->rolling);
+      return;
+    }
+    if (command->count("--rolling")) {
+      throw UsageError(
+          "--rolling is the 3D Catom's; the modules here are Datoms (say --module catom3d)");
+    }
     const motion::RuleTable table;
     size_t failures = 0;
     for (const std::string& rules : args->rules) {
       for (const std::string& attachment : args->attachment) {
         const motion::RuleOptions options = parseRuleOptions(rules, attachment);
         const auto report = motion::checkBidirectionality(scene.world, table, options);
-        fmt::print("{}: {} cells, {} motions, {} counterexamples\n", ruleLabel(options),
+        fmt::print("{}: {} cells, {} motions, {} counterexamples\n",
+                   describe(MotionModel{world::ModuleKind::kDatom, options, {}}),
                    report.cellsChecked, report.motionsChecked, report.counterexamples.size());
         for (const auto& counterexample : report.counterexamples) {
           const motion::Motion& m = counterexample.forward;
@@ -184,6 +241,12 @@ void addVerify(CLI::App& app) {
 ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
                          const std::optional<geometry::Cell>& start,
                          const motion::RuleOptions& options) {
+  const world::ModuleKind kind = scene.moduleKind;
+  return reachOnScene(std::move(scene), goal, start, MotionModel{kind, options, {}});
+}
+
+ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
+                         const std::optional<geometry::Cell>& start, const MotionModel& model) {
   // The mobile, chosen as `run` chooses it, is not part of the fixed world.
   const experiment::MobileChoice mobile =
       unwrap(experiment::chooseMobile(scene.world, goal, start));
@@ -199,9 +262,22 @@ ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
                     "must be next to a module of the scene)",
                     geometry::toString(goal)));
   }
+  std::vector<geometry::Cell> path;
+  if (model.kind == world::ModuleKind::kCatom3D) {
+    const catom3d::RollTable table;
+    motion::DistanceMap map = unwrap(catom3d::reach(scene.world, table, goal, model.rolling));
+    if (start) {
+      path.push_back(*start);
+      for (const catom3d::RollMotion& m :
+           unwrap(catom3d::followGradient(scene.world, table, map, *start, model.rolling))) {
+        path.push_back(m.goal);
+      }
+    }
+    return {std::move(scene.world), mobile.module.has_value(), std::move(map), std::move(path)};
+  }
+  const motion::RuleOptions& options = model.datom;
   const motion::RuleTable table;
   motion::DistanceMap map = unwrap(motion::reach(scene.world, table, goal, options));
-  std::vector<geometry::Cell> path;
   if (start) {
     path.push_back(*start);
     for (const motion::Motion& m :

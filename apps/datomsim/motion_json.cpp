@@ -26,13 +26,18 @@ std::string_view onOff(bool on) {
 }  // namespace
 
 Status writeReachJson(const motion::DistanceMap& map, const std::vector<Cell>& path,
-                      std::FILE* file) {
+                      const MotionModel& model, std::FILE* file) {
   FileEmitter emitter{file};
   JsonObjectStream out(emitter.emit());
   out.field("goal", cellJson(map.goal()));
-  out.field("rules", motion::toString(map.options().rules));
-  out.field("attachment", onOff(map.options().attachment));
-  out.field("connectivity", onOff(map.options().connectivity));
+  if (model.kind == world::ModuleKind::kCatom3D) {
+    out.field("module", world::toString(model.kind));
+    out.field("rolling", catom3d::toString(model.rolling));
+  } else {
+    out.field("rules", motion::toString(map.options().rules));
+    out.field("attachment", onOff(map.options().attachment));
+    out.field("connectivity", onOff(map.options().connectivity));
+  }
   if (!path.empty()) out.cells("path", path);
   out.cellValues("distances", map.sorted());
   out.close();
@@ -109,6 +114,76 @@ std::string movesTable(const Cell& at, const std::vector<motion::Evaluation>& mo
   if (validCount > 0)
     out += "\nvalid (helpers compress the pistons along these world axes):\n" + header + valid;
   if (validCount < moves.size()) out += "\nrefused:\n" + header + refused;
+  return out;
+}
+
+namespace {
+
+// A roll's pivot, face and goal, whether it holds or not.
+struct RollLine {
+  Cell pivot, goal;
+  catom3d::Face face;
+  std::string refusal;  // empty when it holds
+};
+
+std::vector<RollLine> rollLines(const Cell& at, const std::vector<catom3d::RollEvaluation>& rolls) {
+  std::vector<RollLine> lines;
+  for (const catom3d::RollEvaluation& evaluation : rolls) {
+    if (const auto* roll = std::get_if<catom3d::RollMotion>(&evaluation)) {
+      lines.push_back({roll->pivotCell, roll->goal, roll->roll->face, {}});
+    } else {
+      const auto& refusal = std::get<catom3d::RollRefusal>(evaluation);
+      const Cell pivot = at - refusal.roll->mobileOffset;
+      lines.push_back({pivot, pivot + refusal.roll->goalOffset, refusal.roll->face,
+                       catom3d::describe(refusal, at)});
+    }
+  }
+  return lines;
+}
+
+}  // namespace
+
+std::string rollsJson(const Cell& at, const std::vector<catom3d::RollEvaluation>& rolls,
+                      const MotionModel& model) {
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const RollLine& line : rollLines(at, rolls)) {
+    nlohmann::ordered_json entry;
+    entry["pivot"] = cellJson(line.pivot);
+    entry["face"] = catom3d::toString(line.face);
+    entry["goal"] = cellJson(line.goal);
+    entry["valid"] = line.refusal.empty();
+    entry["refusal"] =
+        line.refusal.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(line.refusal);
+    list.push_back(std::move(entry));
+  }
+  nlohmann::ordered_json document = {{"at", cellJson(at)},
+                                     {"module", world::toString(model.kind)},
+                                     {"rolling", catom3d::toString(model.rolling)},
+                                     {"moves", std::move(list)}};
+  return document.dump() + "\n";
+}
+
+std::string rollsTable(const Cell& at, const std::vector<catom3d::RollEvaluation>& rolls,
+                       const MotionModel& model) {
+  std::string valid, refused;
+  size_t validCount = 0;
+  for (const RollLine& line : rollLines(at, rolls)) {
+    const std::string row =
+        fmt::format("  {:<11} {:<9}  {:<11}", geometry::toString(line.pivot),
+                    catom3d::toString(line.face), geometry::toString(line.goal));
+    if (line.refusal.empty()) {
+      ++validCount;
+      valid += row + "\n";
+    } else {
+      refused += row + " " + line.refusal + "\n";
+    }
+  }
+  const std::string header = fmt::format("  {:<11} {:<9}  {}\n", "pivot", "face", "goal");
+  std::string out =
+      fmt::format("the 3D Catom at {}: {} of {} rolls hold ({} rules)\n", geometry::toString(at),
+                  validCount, rolls.size(), catom3d::toString(model.rolling));
+  if (validCount > 0) out += "\nvalid:\n" + header + valid;
+  if (validCount < rolls.size()) out += "\nrefused:\n" + header + refused;
   return out;
 }
 

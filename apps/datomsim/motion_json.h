@@ -4,6 +4,8 @@
 //          (distances sorted by x, then y, then z; "path":[[x,y,z],...] when a start is given)
 //   moves: {"at":[x,y,z],"moves":[{"pivot":[x,y,z],"piston":P,"turn":"left","goal":[x,y,z],
 //          "valid":true,"refusal":null,"deformations":[{"cell":[x,y,z],"pistons":[P,Q]}]}]}
+// For 3D Catoms, "module":"catom3d" and "rolling":"symmetric" take the place of the rule options,
+// and a roll has a "face" ("hexagonal" or "octagonal") where a turn has a piston and a turn.
 // Pistons are world axes (docs/conventions.md, section 2). See docs/file-formats.md.
 #pragma once
 
@@ -11,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "arguments.h"
+#include "catom3d/rolling.h"
 #include "geometry/cell.h"
 #include "motion/motion.h"
 #include "motion/reach.h"
@@ -19,11 +23,17 @@ namespace datomsim::app {
 
 // Streams the reach document to an open file; the error says what could not be written.
 Status writeReachJson(const motion::DistanceMap& map, const std::vector<geometry::Cell>& path,
-                      std::FILE* file);
+                      const MotionModel& model, std::FILE* file);
 
 std::string movesJson(const geometry::Cell& at, const std::vector<motion::Evaluation>& moves);
 
 // The same for a person: one line per rule, valid ones first, then the refused with their reason.
 std::string movesTable(const geometry::Cell& at, const std::vector<motion::Evaluation>& moves);
+
+// The same two for a 3D Catom's rolls.
+std::string rollsJson(const geometry::Cell& at, const std::vector<catom3d::RollEvaluation>& rolls,
+                      const MotionModel& model);
+std::string rollsTable(const geometry::Cell& at, const std::vector<catom3d::RollEvaluation>& rolls,
+                       const MotionModel& model);
 
 }  // namespace datomsim::app

@@ -211,6 +211,12 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
 
 RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArguments& args,
                      std::span<const ProgramEntry> added) {
+  if (scene.moduleKind == world::ModuleKind::kCatom3D) {
+    throw UsageError(fmt::format(
+        "{}: its modules are 3D Catoms, and the simulator runs Datoms only (their rolls are not "
+        "simulated yet): reach, moves, verify and compare take Catom scenes (docs/catom3d.md)",
+        sceneName));
+  }
   experiment::RunRequest request;
   request.program = args.program;
   request.added = added;

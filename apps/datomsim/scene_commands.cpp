@@ -23,7 +23,15 @@ struct GenerateArguments {
   std::vector<std::string> targetFiles;
   // A grid target of a box of cells: size and corner cell.
   std::string targetBox, targetOrigin = "0,0,0";
+  // What the modules are: "datom" or "catom3d" (the file says so).
+  std::string module = "datom";
 };
+
+void addModuleKindOption(CLI::App& command, std::string& module, const std::string& help) {
+  command.add_option("--module", module, help)
+      ->check(CLI::IsMember({"datom", "catom3d"}))
+      ->capture_default_str();
+}
 
 CLI::App* addGenerator(CLI::App& generate, const std::string& name, const std::string& help,
                        GenerateArguments& args) {
@@ -38,6 +46,8 @@ CLI::App* addGenerator(CLI::App& generate, const std::string& name, const std::s
   command->add_option("--target-origin", args.targetOrigin, "Corner cell x,y,z of --target-box")
       ->capture_default_str()
       ->needs(box);
+  addModuleKindOption(*command, args.module,
+                      "What the modules are: datom, or catom3d (the 3D Catom, docs/catom3d.md)");
   return command;
 }
 
@@ -76,6 +86,7 @@ void writeGenerated(world::World world, const std::string& name, const GenerateA
   io::Scene scene;
   scene.world = std::move(world);
   scene.name = name;
+  scene.moduleKind = *world::moduleKindNamed(args.module);
   for (const std::string& file : args.targetFiles) {
     io::Scene source = unwrap(io::readScene(file));
     if (source.targets.empty()) throw UsageError(file + ": has no targets to attach (--target)");
@@ -193,20 +204,28 @@ void addGenerate(CLI::App& app) {
 
 void addConvert(CLI::App& app) {
   struct Arguments {
-    std::string in, out;
+    std::string in, out, module;
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command =
       app.add_subcommand("convert", "Convert a scene between VisibleSim XML and JSON");
   command->add_option("scene", args->in, "Scene file to read (.xml or .json)")->required();
   command->add_option("-o,--out", args->out, "Scene file to write (.xml or .json)")->required();
+  command
+      ->add_option("--module", args->module,
+                   "Make the modules datom or catom3d (default: what the file says)")
+      ->check(CLI::IsMember({"datom", "catom3d"}));
   addExample(*command, "convert scenes/paper-arch-hole1.json -o arch1.xml");
   command->callback([args] {
     refuseClashes({{"scene", args->in}}, {{"--out", args->out}});
     io::Scene scene = unwrap(io::readScene(args->in));
+    if (!args->module.empty()) scene.moduleKind = *world::moduleKindNamed(args->module);
     declareGridForVisibleSim(scene, args->out);
     check(io::writeScene(scene, args->out));
-    reportWritten(args->out, fmt::format("{} modules", scene.world.size()));
+    reportWritten(
+        args->out,
+        fmt::format("{} modules{}", scene.world.size(),
+                    scene.moduleKind == world::ModuleKind::kCatom3D ? " (3D Catoms)" : ""));
   });
 }
 
@@ -281,6 +300,7 @@ void addInfo(CLI::App& app) {
     nlohmann::ordered_json out;
     out["scene"] = args->scene;
     out["modules"] = world.size();
+    out["module"] = world::toString(scene.moduleKind);
     out["components"] = components;
     if (world.size() > 0) {
       out["min_cell"] = {low.x, low.y, low.z};
@@ -304,8 +324,8 @@ void addInfo(CLI::App& app) {
       fmt::print("{}\n", out.dump());
       return;
     }
-    fmt::print("scene       {}\nmodules     {}\ncomponents  {}\n", args->scene, world.size(),
-               components);
+    fmt::print("scene       {}\nmodules     {} ({})\ncomponents  {}\n", args->scene, world.size(),
+               world::toString(scene.moduleKind), components);
     if (world.size() > 0) {
       fmt::print("cells       {} .. {}\n", geometry::toString(low), geometry::toString(high));
     }

@@ -49,9 +49,9 @@ constexpr int64_t kInt32Min = std::numeric_limits<int32_t>::min();
 constexpr int64_t kInt32Max = std::numeric_limits<int32_t>::max();
 
 // Top-level and module keys, as bits for "seen" sets.
-constexpr std::array<std::string_view, 10> kTopKeys = {
-    "format",    "version",    "name",    "description", "grid",
-    "blockSize", "visiblesim", "modules", "targets",     "parameters"};
+constexpr std::array<std::string_view, 11> kTopKeys = {
+    "format",     "version", "name",    "description", "grid",  "blockSize",
+    "visiblesim", "modules", "targets", "parameters",  "module"};
 constexpr std::array<std::string_view, 4> kModuleKeys = {"id", "cell", "orientation", "color"};
 
 template <size_t N>
@@ -223,6 +223,13 @@ bool SceneHandler::topField() {
   } else if (key_ == "name" || key_ == "description") {
     if (!v.is_string()) return fail(key_, "expected a string, got " + brief(v));
     (key_ == "name" ? scene_.name : scene_.description) = v.get<std::string>();
+  } else if (key_ == "module") {
+    const auto kind =
+        v.is_string() ? world::moduleKindNamed(v.get_ref<const std::string&>()) : std::nullopt;
+    if (!kind) {
+      return fail("module", "expected \"datom\" or \"catom3d\", got " + brief(v));
+    }
+    scene_.moduleKind = *kind;
   } else if (key_ == "grid") {
     if (!v.is_null()) {
       const auto size = threeIntegers(v, 1, kInt32Max);

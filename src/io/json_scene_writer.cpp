@@ -152,6 +152,10 @@ void emitScene(const Scene& scene, Output& output) {
                      kJsonSceneVersion);
   if (scene.name) out += "  \"name\": " + jsonString(*scene.name) + ",\n";
   if (scene.description) out += "  \"description\": " + jsonString(*scene.description) + ",\n";
+  // Written for Catoms only: a Datom scene's file is what it always was.
+  if (scene.moduleKind != world::ModuleKind::kDatom) {
+    out += fmt::format("  \"module\": \"{}\",\n", world::toString(scene.moduleKind));
+  }
   if (const auto& grid = scene.world.bounds().gridSize) {
     out += fmt::format("  \"grid\": [{},{},{}],\n", grid->x, grid->y, grid->z);
   } else {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "target/target.h"
+#include "world/module_kind.h"
 #include "world/world.h"
 
 namespace datomsim::io {
@@ -47,6 +48,8 @@ inline constexpr std::array<double, 3> kDefaultBlockSize = {10, 10, 10};
 struct Scene {
   // Modules in file order, with latches set between all neighbours once read.
   world::World world{};
+  // What the modules are (JSON "module", XML <blockList moduleKind=...>; docs/file-formats.md).
+  world::ModuleKind moduleKind = world::ModuleKind::kDatom;
   // Size of a module for VisibleSim's viewer, in its own units (the lattice spacing).
   std::array<double, 3> blockSize = kDefaultBlockSize;
   std::optional<std::string> name;

@@ -264,6 +264,15 @@ class XmlSceneReader {
       }
       scene.blockSize = *size;
     }
+    // VisibleSim's files do not name the module (its executable does): datomsim says it here,
+    // where VisibleSim's reader looks for nothing of that name and opens the file all the same.
+    if (const char* text = blockList.Attribute("moduleKind")) {
+      const auto kind = world::moduleKindNamed(text);
+      if (!kind) {
+        return attributeError(&blockList, "moduleKind", text, "must be datom or catom3d");
+      }
+      scene.moduleKind = *kind;
+    }
     if (const char* text = blockList.Attribute("color")) {
       const auto color = parseColor(text);
       if (!color) {
@@ -461,6 +470,9 @@ void printScene(tinyxml2::XMLPrinter& printer, const Scene& scene) {
   printer.PushAttribute("blockSize", fmt::format("{},{},{}", formatNumber(size[0]),
                                                  formatNumber(size[1]), formatNumber(size[2]))
                                          .c_str());
+  if (scene.moduleKind != world::ModuleKind::kDatom) {
+    printer.PushAttribute("moduleKind", std::string(world::toString(scene.moduleKind)).c_str());
+  }
   // Ids 1, 2, 3... in order are what a reader assigns anyway; only other ids need writing.
   const auto modules = scene.world.modules();
   bool writeIds = false;

@@ -5,6 +5,7 @@
 // (bidirectionality) d is also the number of motions from that cell to G.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -24,6 +25,23 @@ class DistanceMap {
 
   const geometry::Cell& goal() const { return goal_; }
   const RuleOptions& options() const { return options_; }
+
+  // Records a cell the goal is reached from in `distance` motions. Cells come in breadth-first
+  // order, the goal first; a cell already recorded is refused. How another module's motions
+  // (catom3d/) make a map of the same kind, drawn and written the same way.
+  bool add(const geometry::Cell& cell, int distance) {
+    if (index_.find(cell) != world::Occupancy::kEmpty) return false;
+    index_.insert(cell, static_cast<uint32_t>(cells_.size()));
+    cells_.push_back({cell, distance});
+    maxDistance_ = std::max(maxDistance_, distance);
+    return true;
+  }
+  bool contains(const geometry::Cell& cell) const {
+    return index_.find(cell) != world::Occupancy::kEmpty;
+  }
+  // The cells in the order they were recorded (breadth first).
+  const std::vector<std::pair<geometry::Cell, int>>& inOrder() const { return cells_; }
+  void countEvaluations(uint64_t count) { ruleEvaluations_ += count; }
 
   // The distance of a cell, or nullopt when the mobile cannot reach the goal from it.
   std::optional<int> distanceAt(const geometry::Cell& cell) const;

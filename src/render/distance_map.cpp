@@ -5,6 +5,7 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
@@ -171,6 +172,65 @@ Result<std::string> renderDistanceMapSvg(const DistanceMapPicture& picture) {
   renumberSurfaceIds(bytes);
   addTitle(bytes, picture, *scene, layout);
   return bytes;
+}
+
+Result<std::string> renderSideBySidePng(const std::vector<DistanceMapPicture>& pictures) {
+  struct Laid {
+    Scene scene;
+    DistanceMapLayout layout;
+  };
+  std::vector<Laid> laid;
+  int width = 0, height = 0;
+  constexpr int kGap = 24;
+  for (size_t i = 0; i < pictures.size(); ++i) {
+    Result<Scene> scene = detail::prepare(pictures[i]);
+    if (!scene) return Error{fmt::format("picture {}: {}", i + 1, scene.error())};
+    const DistanceMapLayout layout = detail::layoutOf(*scene, pictures[i]);
+    width += layout.width + (i ? kGap : 0);
+    height = std::max(height, layout.height);
+    laid.push_back({std::move(scene).value(), layout});
+  }
+  if (width > kMaxPngSide || height > kMaxPngSide) {
+    return Error{fmt::format(
+        "the pictures side by side would be {} x {} pixels, more than the {} a PNG can have on "
+        "a side; lower pixelsPerCell or set maxSide",
+        width, height, kMaxPngSide)};
+  }
+  const SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
+    return cairoError("cannot create the picture", cairo_surface_status(surface.get()));
+  }
+  {
+    const ContextPtr cr(cairo_create(surface.get()));
+    cairo_set_source_rgb(cr.get(), 1, 1, 1);
+    cairo_paint(cr.get());
+    double left = 0;
+    for (size_t i = 0; i < laid.size(); ++i) {
+      cairo_save(cr.get());
+      cairo_translate(cr.get(), left, 0);
+      cairo_rectangle(cr.get(), 0, 0, laid[i].layout.width, laid[i].layout.height);
+      cairo_clip(cr.get());
+      detail::CairoCellPainter painter;
+      detail::draw(cr.get(), laid[i].scene, pictures[i], laid[i].layout, painter);
+      cairo_restore(cr.get());
+      left += laid[i].layout.width + kGap;
+    }
+    if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
+      return cairoError("cannot draw the pictures", cairo_status(cr.get()));
+    }
+  }
+  std::string bytes;
+  const cairo_status_t status =
+      cairo_surface_write_to_png_stream(surface.get(), appendToString, &bytes);
+  if (status != CAIRO_STATUS_SUCCESS) return cairoError("cannot encode the PNG", status);
+  return bytes;
+}
+
+Status writeSideBySidePng(const std::vector<DistanceMapPicture>& pictures,
+                          const std::filesystem::path& path) {
+  Result<std::string> bytes = renderSideBySidePng(pictures);
+  if (!bytes) return Error{fmt::format("cannot write {}: {}", path.string(), bytes.error())};
+  return writeFileAtomically(path, *bytes);
 }
 
 Status writeDistanceMapPng(const DistanceMapPicture& picture, const std::filesystem::path& path) {

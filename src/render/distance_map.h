@@ -59,6 +59,10 @@ struct DistanceMapPicture {
   // The scene's mobile module is not in `world` (it was taken out to compute the distances): the
   // title's count says "+ the mobile".
   bool mobileTakenOut = false;
+  // Cells pointed out by a black diamond around their square (`compare`: the cells only one kind
+  // of module reaches), and the legend's words for them ("only the Datom reaches").
+  std::vector<geometry::Cell> marked;
+  std::string markedLabel;
 };
 
 // A point of the picture in pixels: x to the right, y down, from the top-left corner.
@@ -109,6 +113,12 @@ Result<DistanceMapLayout> layoutDistanceMap(const DistanceMapPicture& picture);
 // The picture as the bytes of a PNG file (8-bit RGB) or an SVG file (pixel units).
 Result<std::string> renderDistanceMapPng(const DistanceMapPicture& picture);
 Result<std::string> renderDistanceMapSvg(const DistanceMapPicture& picture);
+
+// Pictures side by side, left to right, on one PNG (each laid out as alone, tops aligned); the
+// error names the picture at fault.
+Result<std::string> renderSideBySidePng(const std::vector<DistanceMapPicture>& pictures);
+Status writeSideBySidePng(const std::vector<DistanceMapPicture>& pictures,
+                          const std::filesystem::path& path);
 
 // Renders and writes atomically (atomic_file.h): on error the file at `path` is left as it was,
 // no temporary file remains beside it, and the message names the path.

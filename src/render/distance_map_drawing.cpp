@@ -296,6 +296,27 @@ void drawGoalMarker(cairo_t* cr, PixelPoint at, double ppc) {
   drawRing(cr, at, 0.42 * ppc, std::max(2.0, 0.05 * ppc));
 }
 
+// A black diamond with a white halo around a cell's square: unlike the path's red rings, and
+// leaving the square's colour and number visible.
+void drawDiamond(cairo_t* cr, PixelPoint at, double half, double width) {
+  cairo_new_path(cr);
+  cairo_move_to(cr, at.x, at.y - half);
+  cairo_line_to(cr, at.x + half, at.y);
+  cairo_line_to(cr, at.x, at.y + half);
+  cairo_line_to(cr, at.x - half, at.y);
+  cairo_close_path(cr);
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_set_line_width(cr, width + 2);
+  cairo_stroke_preserve(cr);
+  cairo_set_source_rgb(cr, 0.08, 0.08, 0.08);
+  cairo_set_line_width(cr, width);
+  cairo_stroke(cr);
+}
+
+void drawMarkedCell(cairo_t* cr, PixelPoint at, double ppc) {
+  drawDiamond(cr, at, 0.4 * ppc, std::max(1.5, 0.045 * ppc));
+}
+
 // The line of the path, with a dark halo so it reads over every colour, and a dot per step.
 void drawPathLine(cairo_t* cr, const std::vector<PixelPoint>& points, double ppc) {
   const double width = std::max(2.0, std::round(0.085 * ppc));
@@ -480,6 +501,10 @@ void drawLegend(cairo_t* cr, const Scene& scene, const DistanceMapLayout& layout
       case Kind::kPathGoal:
         drawLegendSquare(cr, mark, swatch * 0.75, 0, scene.colorOf(0), false, font);
         drawGoalMarker(cr, mark, markerScale * 0.5);
+        break;
+      case Kind::kMarked:
+        drawLegendSquare(cr, mark, swatch * 0.75, 0, Color{235, 235, 235}, false, font);
+        drawMarkedCell(cr, mark, markerScale * 0.6);
         break;
       case Kind::kPathLayer: {
         // The tag starts at the swatch's left edge; the text follows it.
@@ -715,6 +740,9 @@ void draw(cairo_t* cr, const Scene& scene, const DistanceMapPicture& picture,
   drawAxes(cr, scene, layout);
   drawModules(cr, scene, layout, painter);
   drawDistances(cr, scene, layout, painter);
+  for (const geometry::Cell& cell : picture.marked) {
+    drawMarkedCell(cr, layout.pixelOf(cell), layout.pixelsPerCell);
+  }
   drawPath(cr, scene, picture, layout);
   drawLegend(cr, scene, layout);
 }

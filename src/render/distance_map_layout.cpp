@@ -135,6 +135,12 @@ std::vector<LegendRow> legendRows(const Scene& scene, const DistanceMapPicture& 
       rows.push_back({Kind::kPathLayer, layer, layer, "its layer, where it changes"});
     }
   }
+  if (!picture.marked.empty()) {
+    if (!rows.empty()) rows.push_back({Kind::kGap, 0, 0, ""});
+    rows.push_back({Kind::kMarked, 0, 0,
+                    fmt::format("{} ({} cell{})", picture.markedLabel, picture.marked.size(),
+                                picture.marked.size() == 1 ? "" : "s")});
+  }
   if (!scene.modules.empty()) {
     if (!rows.empty()) rows.push_back({Kind::kGap, 0, 0, ""});
     rows.push_back({Kind::kHeader, 0, 0, "layer"});

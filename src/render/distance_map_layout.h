@@ -54,6 +54,7 @@ struct LegendRow {
     kPathStart,
     kPathGoal,
     kPathLayer,  // value: a layer the path changes to
+    kMarked,     // the picture's marked cells
     kLayer,      // value: the layer
     kGap
   };

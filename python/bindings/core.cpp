@@ -83,12 +83,28 @@ app::RuleArguments ruleArguments(const std::string& rules, bool attachment, bool
   return arguments;
 }
 
+// The module kind named, or the scene's; refused as the command line refuses it.
+world::ModuleKind kindOf(const std::optional<std::string>& module, world::ModuleKind scene) {
+  if (!module) return scene;
+  if (const auto kind = world::moduleKindNamed(*module)) return *kind;
+  throw app::UsageError("--module: " + *module + " not in {datom,catom3d}");
+}
+
+catom3d::RollRules rollingOf(const std::string& rolling) {
+  if (const auto rules = catom3d::rollRulesNamed(rolling)) return *rules;
+  throw app::UsageError("--rolling: " + rolling + " not in {symmetric,visiblesim}");
+}
+
 // A scene in memory: the modules and what the file formats carry besides them.
 class Scene {
  public:
   explicit Scene(io::Scene scene) : scene_(std::move(scene)) {}
 
   const io::Scene& scene() const { return scene_; }
+  std::string module() const { return std::string(world::toString(scene_.moduleKind)); }
+  void setModule(const std::string& module) {
+    scene_.moduleKind = kindOf(module, scene_.moduleKind);
+  }
 
   size_t size() const { return scene_.world.size(); }
 
@@ -215,11 +231,14 @@ Scene sceneOf(world::World world, std::string name) {
 
 // {"cells": (n, 3), "distances": (n,), "path": (p, 3), "goal": (3,)}: `reach --out` as arrays.
 py::dict reach(const Scene& scene, const py::object& goal, const py::object& start,
-               const std::string& rules, bool attachment, bool connectivity) {
+               const std::string& rules, bool attachment, bool connectivity,
+               const std::optional<std::string>& module, const std::string& rolling) {
   const Cell at = cellArgument(goal, "--goal");
+  const app::MotionModel model{kindOf(module, scene.scene().moduleKind),
+                               ruleArguments(rules, attachment, connectivity).options(),
+                               rollingOf(rolling)};
   const app::ReachOutput reached =
-      app::reachOnScene(scene.scene(), at, optionalCell(start, "--start"),
-                        ruleArguments(rules, attachment, connectivity).options());
+      app::reachOnScene(scene.scene(), at, optionalCell(start, "--start"), model);
   const auto sorted = reached.map.sorted();
   std::vector<Cell> cells;
   py::array_t<int32_t> distances{py::ssize_t(sorted.size())};
@@ -239,7 +258,8 @@ py::dict reach(const Scene& scene, const py::object& goal, const py::object& sta
 
 // The JSON text of `moves --out`.
 std::string moves(const Scene& scene, const py::object& at, const std::string& rules,
-                  bool attachment) {
+                  bool attachment, const std::optional<std::string>& module,
+                  const std::string& rolling) {
   const Cell cell = cellArgument(at, "--at");
   const world::World& world = scene.scene().world;
   if (!world.isInside(cell)) {
@@ -247,10 +267,15 @@ std::string moves(const Scene& scene, const py::object& at, const std::string& r
   }
   const world::Module* mobile = world.moduleAt(cell);
   const motion::Mobile where{cell, mobile ? std::optional(mobile->id) : std::nullopt};
+  const app::MotionModel model{kindOf(module, scene.scene().moduleKind),
+                               ruleArguments(rules, attachment, false).options(),
+                               rollingOf(rolling)};
+  if (model.kind == world::ModuleKind::kCatom3D) {
+    const catom3d::RollTable rolls;
+    return app::rollsJson(cell, catom3d::evaluateAll(world, rolls, where, model.rolling), model);
+  }
   const motion::RuleTable table;
-  return app::movesJson(
-      cell,
-      motion::evaluateAll(world, table, where, ruleArguments(rules, attachment, false).options()));
+  return app::movesJson(cell, motion::evaluateAll(world, table, where, model.datom));
 }
 
 // (the JSON text of `run --out`, the trace or None, the failure or None).
@@ -338,6 +363,8 @@ PYBIND11_MODULE(_core, module) {
                              "Orientation codes 0..23, (n,) uint8")
       .def_property_readonly("grid", &Scene::grid, "The grid size (x, y, z), or None")
       .def_property_readonly("name", &Scene::name)
+      .def_property("module", &Scene::module, &Scene::setModule,
+                    "What the modules are: \"datom\" or \"catom3d\" (saved with the scene)")
       .def_property_readonly("targets", &Scene::targets,
                              "The cells of each target shape, (k, 3) int32 each")
       .def("add", &Scene::add, py::arg("cell"), py::arg("orientation") = 0,
@@ -411,9 +438,11 @@ PYBIND11_MODULE(_core, module) {
       "A reconfiguration case (generate reshape): its scene, the shape to build as its target");
   module.def("reach", &reach, py::arg("scene"), py::arg("goal"), py::arg("start") = py::none(),
              py::arg("rules") = "paper", py::arg("attachment") = true,
-             py::arg("connectivity") = false);
+             py::arg("connectivity") = false, py::arg("module") = py::none(),
+             py::arg("rolling") = "symmetric");
   module.def("moves_json", &moves, py::arg("scene"), py::arg("at"), py::arg("rules") = "paper",
-             py::arg("attachment") = true);
+             py::arg("attachment") = true, py::arg("module") = py::none(),
+             py::arg("rolling") = "symmetric");
   module.def("run", &run, py::arg("scene"), py::arg("program"), py::arg("options"));
   module.def("geometry", &geometryOf, py::arg("radius") = 1.0, py::arg("thickness") = 0.0,
              py::arg("fraction") = py::none());

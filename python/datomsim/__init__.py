@@ -107,20 +107,31 @@ def reach(
     rules: str = "paper",
     attachment: bool = True,
     connectivity: bool = False,
+    module: Optional[str] = None,
+    rolling: str = "symmetric",
 ) -> Reach:
     """The distances to ``goal`` and, with a ``start``, the path, as ``datomsim reach``.
 
     The mobile is chosen as ``run`` chooses it (the module at the start, else the one at the goal
-    moved to the start) and is not part of the fixed world.
+    moved to the start) and is not part of the fixed world. ``module`` ("datom" or "catom3d",
+    default the scene's ``module``) says whose motions apply; ``rolling`` is the 3D Catom's rule
+    set ("symmetric" or "visiblesim", docs/catom3d.md).
     """
-    out = _core.reach(scene, goal, start, rules, attachment, connectivity)
+    out = _core.reach(scene, goal, start, rules, attachment, connectivity, module, rolling)
     return Reach(out["goal"], out["cells"], out["distances"], out["path"])
 
 
-def moves(scene: Scene, at: Cell, rules: str = "paper", attachment: bool = True) -> list:
-    """Every rule of every pivot around ``at``, valid or refused with its reason: the list of
-    ``datomsim moves --out``'s "moves"."""
-    return json.loads(_core.moves_json(scene, at, rules, attachment))["moves"]
+def moves(
+    scene: Scene,
+    at: Cell,
+    rules: str = "paper",
+    attachment: bool = True,
+    module: Optional[str] = None,
+    rolling: str = "symmetric",
+) -> list:
+    """Every rule of every pivot around ``at`` (a 3D Catom's: every roll), valid or refused with
+    its reason: the list of ``datomsim moves --out``'s "moves"."""
+    return json.loads(_core.moves_json(scene, at, rules, attachment, module, rolling))["moves"]
 
 
 def run(

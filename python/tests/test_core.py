@@ -78,6 +78,33 @@ def test_moves_give_what_moves_out_writes(scenes, cli):
     assert any(move["refusal"] for move in listed)
 
 
+def test_a_3d_catom_rolls_as_the_command_line_rolls_it(scenes, cli, tmp_path):
+    path = scenes / "paper-arch-hole1.json"
+    scene = datomsim.load_scene(path)
+    assert scene.module == "datom"
+    rolled = datomsim.reach(scene, goal=(6, 5, 2), start=(0, 0, 2), module="catom3d")
+    written = cli("reach", path, "--goal", "6,5,2", "--start", "0,0,2", "--module", "catom3d",
+                  "--out", "-")
+    assert written.returncode == 0, written.stderr
+    expected = json.loads(written.stdout)
+    assert rolled.cells.tolist() == [d[:3] for d in expected["distances"]]
+    assert rolled.path.tolist() == expected["path"]
+    # A scene made of Catoms rolls without being told, and keeps its kind in its file.
+    scene.module = "catom3d"
+    assert datomsim.reach(scene, goal=(6, 5, 2)).cells.tolist() == rolled.cells.tolist()
+    scene.save(tmp_path / "catoms.json")
+    assert datomsim.load_scene(tmp_path / "catoms.json").module == "catom3d"
+    listed = datomsim.moves(scene, at=(2, 2, 3))
+    assert listed == json.loads(
+        cli("moves", tmp_path / "catoms.json", "--at", "2,2,3", "--format", "json").stdout
+    )["moves"]
+    assert {move["face"] for move in listed} == {"hexagonal", "octagonal"}
+    with pytest.raises(datomsim.Error, match="--module: sphere not in"):
+        scene.module = "sphere"
+    with pytest.raises(datomsim.Error, match="--rolling: exact not in"):
+        datomsim.reach(scene, goal=(6, 5, 2), rolling="exact")
+
+
 @pytest.mark.parametrize(
     "program, options, arguments",
     [

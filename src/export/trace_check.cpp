@@ -6,6 +6,8 @@
 #include <cmath>
 #include <string_view>
 
+#include "world/module_kind.h"
+
 namespace datomsim::exporting {
 
 namespace {
@@ -114,6 +116,14 @@ std::string headerProblem(const Json& header) {
   if (!isInteger(field(header, "version")) || field(header, "version").get<double>() != 1) {
     return fmt::format("unsupported trace version {}: this viewer reads version 1",
                        stringify(field(header, "version")));
+  }
+  // Optional: a trace without "module" is one of Datoms; a "module" the viewer cannot draw is
+  // refused, null included.
+  if (const auto kind = header.find("module"); kind != header.end()) {
+    if (!kind->is_string() || !world::moduleKindNamed(kind->get<std::string>())) {
+      return fmt::format("\"module\" must be \"{}\" or \"{}\", not {}", world::kModuleKindNames[0],
+                         world::kModuleKindNames[1], kind->is_null() ? "null" : stringify(*kind));
+    }
   }
   const Json& spacing = field(header, "spacing");
   if (!isFiniteNumber(spacing) || !(spacing.get<double>() > 0)) {

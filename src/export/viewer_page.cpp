@@ -236,8 +236,9 @@ Result<std::string> checkTrace(const std::string& text, const std::string& name)
                                                                   : std::string();
 }
 
-std::string sceneTrace(const world::World& world, const std::string& description) {
-  record::TraceWriter trace;
+std::string sceneTrace(const world::World& world, const std::string& description,
+                       world::ModuleKind kind) {
+  record::TraceWriter trace(kind);
   trace.header(world, description);
   return trace.text();
 }
@@ -317,7 +318,7 @@ Result<ViewerPage> pageForFile(const std::filesystem::path& input) {
   const auto scene = io::readScene(input);
   if (!scene) return Error{scene.error()};
   page.title = scene->name.value_or(input.filename().string());
-  page.trace = sceneTrace(scene->world, page.title);
+  page.trace = sceneTrace(scene->world, page.title, scene->moduleKind);
   return page;
 }
 

@@ -17,6 +17,7 @@
 
 #include "datomsim/result.h"
 #include "geometry/cell.h"
+#include "world/module_kind.h"
 #include "world/world.h"
 
 namespace datomsim::exporting {
@@ -58,8 +59,10 @@ bool looksLikeTrace(const std::string& text);
 // header's description (empty when it has none).
 Result<std::string> checkTrace(const std::string& text, const std::string& name);
 
-// A header-only trace of a world at rest (sim::TraceRecorder::header, unit module).
-std::string sceneTrace(const world::World& world, const std::string& description);
+// A header-only trace of a world at rest (record::TraceWriter::header, unit module), naming the
+// module kind when it is not the Datom.
+std::string sceneTrace(const world::World& world, const std::string& description,
+                       world::ModuleKind kind = world::ModuleKind::kDatom);
 
 // Checks a distance map document (as ViewerPage::overlay describes) and returns it compact.
 Result<std::string> checkOverlay(const std::string& text, const std::string& name);
@@ -70,8 +73,8 @@ std::string overlayJson(const std::vector<std::pair<geometry::Cell, int>>& dista
                         const std::optional<geometry::Cell>& goal);
 
 // The page for an input file: a trace (recognised by its header, whatever its extension) or a
-// scene (.xml or .json, io/scene_file.h) shown at rest. The title is the trace's description,
-// else the scene's name, else the file name.
+// scene (.xml or .json, io/scene_file.h) shown at rest, as modules of the scene's kind. The title
+// is the trace's description, else the scene's name, else the file name.
 Result<ViewerPage> pageForFile(const std::filesystem::path& input);
 
 // The HTML text of a page. Refuses a bundle that cannot stand inside a <script> element (it

@@ -64,12 +64,21 @@ bool movesWith(const datom::Part& part, int piston) {
 
 TraceWriter::TraceWriter(const datom::Dimensions& dimensions) : dimensions_(dimensions) {}
 
+TraceWriter::TraceWriter(world::ModuleKind kind, const datom::Dimensions& dimensions)
+    : dimensions_(dimensions), kind_(kind) {}
+
 void TraceWriter::header(const world::World& world, const std::string& description,
                          std::span<const std::vector<geometry::Cell>> targets) {
   auto out = std::back_inserter(text_);
   const datom::Dimensions& d = dimensions_;
+  text_ += "{\"format\":\"datomsim-trace\",\"version\":1,";
+  // Only a Catom's trace names its module: a Datom trace is byte for byte what every reader of
+  // version 1 knows, and a trace without "module" is one of Datoms.
+  if (kind_ != world::ModuleKind::kDatom) {
+    fmt::format_to(out, "\"module\":\"{}\",", world::toString(kind_));
+  }
   fmt::format_to(out,
-                 "{{\"format\":\"datomsim-trace\",\"version\":1,\"description\":{},"
+                 "\"description\":{},"
                  "\"spacing\":{},\"dimensions\":{{\"r\":{},\"t\":{},\"c\":{},\"e\":{},\"a\":{},"
                  "\"core_edge\":{}}},",
                  quoted(description), number(spacing()), number(d.radius()), number(d.thickness()),

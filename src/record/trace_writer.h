@@ -1,12 +1,13 @@
 // The trace of a run: what pictures and the browser viewer replay (docs/trace-format.md), written
 // by a recorder that listens to the simulator's announcements (sim/observer.h).
 //
-// JSON Lines. The first line is the header: format and version, the module model (dimensions,
-// the 24 orientations as matrices, the kinematics of a piston sampled from the C++ model) and the
-// initial scene. Each following line is one change at one time: a piston moving, a mobile turning
-// about a hinge, a module placed, a latch made or released, a colour. Times are in seconds. The
-// poses the viewer needs and the simulator does not (the hinge a mobile turns about, the fraction
-// turned) are worked out here, from the module's model.
+// JSON Lines. The first line is the header: format and version, the module kind (3D Catoms only: a
+// Datom trace has no "module"), the module model (dimensions, the 24 orientations as matrices, the
+// kinematics of a piston sampled from the C++ model) and the initial scene. Each following line is
+// one change at one time: a piston moving, a mobile turning about a hinge, a module placed, a latch
+// made or released, a colour. Times are in seconds. The poses the viewer needs and the simulator
+// does not (the hinge a mobile turns about, the fraction turned) are worked out here, from the
+// module's model.
 #pragma once
 
 #include <span>
@@ -20,6 +21,7 @@
 #include "geometry/vec3.h"
 #include "program/module_program.h"
 #include "sim/observer.h"
+#include "world/module_kind.h"
 #include "world/world.h"
 
 namespace datomsim::record {
@@ -27,6 +29,8 @@ namespace datomsim::record {
 class TraceWriter final : public sim::Observer {
  public:
   explicit TraceWriter(const datom::Dimensions& dimensions = {});
+  // The trace of a world of `kind`: the header names it, so that the viewer draws that module.
+  explicit TraceWriter(world::ModuleKind kind, const datom::Dimensions& dimensions = {});
 
   // The first line: call before the run, with the world as it starts and the cells of the
   // scene's target shapes, if any.
@@ -55,11 +59,13 @@ class TraceWriter final : public sim::Observer {
   geometry::Vec3 hinge(const geometry::Vec3& pivot, int up, int side) const;
 
   double spacing() const { return 2.0 * dimensions_.radius(); }
+  world::ModuleKind moduleKind() const { return kind_; }
   // Everything recorded so far; the command line writes it to a file.
   const std::string& text() const { return text_; }
 
  private:
   datom::Dimensions dimensions_;
+  world::ModuleKind kind_ = world::ModuleKind::kDatom;
   std::string text_;
 };
 

@@ -17,6 +17,8 @@
 // With a distance map: its legend, captions that hide no module seen from the top, and an address
 // that names the moment shown and opens there. On the demo's self-reconfiguration (the arch built from a layer on its box): the target is
 // partly filled at the start and filled at the end, and its busiest time shows that many motions.
+// On pages of 3D Catoms (the paper's run and its scene at rest, their header naming the Catom): one
+// Catom per module in its cell and no Datom part, a Catom's panel, the run played to the goal.
 // Screenshots go to DIR (default /tmp/viewer-shots). Ends with "N passed, M failed".
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -93,6 +95,19 @@ function makePages(scratch) {
     const file = join(scratch, `${name}.html`);
     view(join(demo, `${name}-trace.jsonl`), '--reach', reach, '-o', file);
     pages.push({ name, file, run: true, overlay: JSON.parse(readFileSync(reach, 'utf8')) });
+  }
+  // 3D Catoms: the paper's run with the two-high arch and its scene at rest (the header alone),
+  // the header naming the Catom. A trace is drawn as the modules its header names, whatever moved
+  // them; the run's turns and places move Catoms as they move Datoms.
+  const [runHeader, ...runChanges] = readFileSync(join(demo, 'arch-hole2-trace.jsonl'), 'utf8').trimEnd().split('\n');
+  const datomHeader = JSON.parse(runHeader);
+  const catomHeader = JSON.stringify({ format: 'datomsim-trace', version: 1, module: 'catom3d', ...datomHeader });
+  for (const [name, lines] of [['catom-run', [catomHeader, ...runChanges]], ['catom-scene', [catomHeader]]]) {
+    const trace = join(scratch, `${name}.jsonl`);
+    writeFileSync(trace, lines.join('\n') + '\n');
+    const file = join(scratch, `${name}.html`);
+    view(trace, '--reach', join(scratch, 'arch-hole2-reach.json'), '-o', file);
+    pages.push({ name, file, catoms: { run: lines.length > 1, modules: datomHeader.modules } });
   }
   // The demo's self-reconfiguration: the arch built from a layer of modules on its box.
   const buildFile = join(scratch, 'arch-build.html');
@@ -379,6 +394,7 @@ async function testPage(context, spec) {
     });
   }
 
+  if (spec.catoms) await testCatoms(page, spec);
   if (spec.walkers) await testWalkers(page, spec);
   if (spec.targets) await testTargets(page, spec);
   if (spec.reshape) await testReshape(page, spec);
@@ -388,6 +404,84 @@ async function testPage(context, spec) {
     assert(requests.length === 0, `requests: ${requests.join(' ')}`);
   });
   await page.close();
+}
+
+// A page of 3D Catoms: one Catom drawn per module, where the module is; no Datom part; a Catom's
+// panel; a run played to its end puts the mobile at the goal.
+async function testCatoms(page, spec) {
+  const name = spec.name;
+  const api = 'window.datomsimViewer';
+  const { modules } = spec.catoms;
+
+  await check(`${name}: draws one 3D Catom per module, in its cell, and no Datom part`, async () => {
+    await page.evaluate(`${api}.seek(0)`);
+    assert((await page.evaluate(`${api}.moduleKind`)) === 'catom3d', 'the page does not read the header as Catoms');
+    const drawn = await page.evaluate(`${api}.drawn()`);
+    const count = (kind) => drawn.meshes.filter((m) => m.kind === kind).reduce((sum, m) => sum + m.instances, 0);
+    assert(count('datom part') === 0, `${count('datom part')} Datom parts drawn`);
+    assert(count('catom body') === modules.length, `${count('catom body')} Catom bodies for ${modules.length} modules`);
+    assert(count('catom connector') === 12 * modules.length, `${count('catom connector')} connector plates`);
+    const misplaced = modules.filter((m, k) => Math.hypot(...drawn.bodies[k].map((x, i) => x - cellToWorld(m.cell, 2)[i])) > 1e-4);
+    assert(misplaced.length === 0, `bodies away from their cells: ${misplaced.map((m) => m.id).join(', ')}`);
+    const subtitle = await page.evaluate(() => document.querySelector('.dv-subtitle').textContent);
+    assert(subtitle.startsWith(`${modules.length} 3D Catoms`), `subtitle: ${subtitle}`);
+    assert(await page.evaluate(() => document.querySelector('.dv-bar select[title^="Connector colour"]').hidden), 'the Datom connector colours are offered');
+  });
+
+  await check(`${name}: a click on a Catom shows its panel, without pistons; labels show`, async () => {
+    await page.evaluate(`${api}.fit()`);
+    await settle(page);
+    const point = await page.evaluate(`${api}.screenPositionOf(1)`);
+    await page.mouse.click(point.x, point.y);
+    const info = await page.evaluate(`${api}.selectedInfo()`);
+    assert(info && /3D Catom 1/.test(info), `no panel for module 1 (got ${info})`);
+    assert(/latches/.test(info) && /orientation/.test(info) && !/piston/.test(info), info);
+    await page.keyboard.press('l');
+    const labels = await page.evaluate(() => [...document.querySelectorAll('.dv-label')].filter((l) => l.style.display !== 'none').length);
+    assert(labels === modules.length, `${labels} labels shown for ${modules.length} modules`);
+    await shoot(page, `${name}-panel-labels`);
+    await page.keyboard.press('l');
+    await page.keyboard.press('Escape');
+    assert((await page.evaluate(`${api}.selectedInfo()`)) === null, 'Esc left the panel open');
+  });
+
+  await check(`${name}: the distance map, the top view, focus and latches`, async () => {
+    assert((await page.evaluate(`${api}.distanceLegend()`)) !== null, 'no distance legend');
+    await page.evaluate(`${api}.fit('top')`);
+    const top = await shoot(page, `${name}-top`);
+    assert((await pictureStats(page, top)).colours > 500, 'blank top view');
+    await page.evaluate(`${api}.setOverlay(false); ${api}.fit(); ${api}.setLatches(true); ${api}.selectId(1); ${api}.setFocus(true)`);
+    await shoot(page, `${name}-focus-latches`);
+    await page.evaluate(`${api}.setFocus(false); ${api}.selectId(-1); ${api}.setLatches(false); ${api}.setOverlay(true)`);
+    // Close, from the front left: the squares where neighbours touch.
+    const [x, y, z] = cellToWorld(modules[0].cell, 2);
+    await page.evaluate(`${api}.camera([${x - 4}, ${y - 7}, ${z + 5}], [${x + 2}, ${y + 2}, ${z}])`);
+    await shoot(page, `${name}-close`);
+    await page.evaluate(`${api}.fit()`);
+  });
+
+  if (!spec.catoms.run) return;
+  await check(`${name}: turns and places move the Catoms: the mobile leaves its cell and ends at the goal`, async () => {
+    const duration = await page.evaluate(`${api}.duration`);
+    const middle = await page.evaluate(() => {
+      const times = window.datomsimViewer.changeTimes;
+      for (let k = 1; k < times.length; ++k) if (times[k] - times[k - 1] >= 0.9 && times[k - 1] > 0) return (times[k] + times[k - 1]) / 2;
+      return times[1];
+    });
+    await page.evaluate(`${api}.seek(${middle})`);
+    const moving = await page.evaluate(`${api}.drawn()`);
+    const index = modules.findIndex((m) => m.id === 1);
+    const away = Math.hypot(...moving.bodies[index].map((x, i) => x - cellToWorld(modules[index].cell, 2)[i]));
+    assert(away > 0.1, `the mobile's body is ${away} from its cell in the middle of a turn`);
+    await shoot(page, `${name}-turning`);
+    await page.evaluate(`${api}.seek(0); ${api}.setSpeed(32); ${api}.play()`);
+    await page.waitForFunction((d) => window.datomsimViewer.time() >= d, duration, { timeout: 120000, polling: 200 });
+    const ended = await page.evaluate(`${api}.drawn()`);
+    const goal = cellToWorld(GOAL, 2);
+    const distance = Math.hypot(...ended.bodies[index].map((x, i) => x - goal[i]));
+    assert(distance < 1e-3, `the mobile's body ends ${distance} away from the goal`);
+    await shoot(page, `${name}-end`);
+  });
 }
 
 // The ids of the module bodies away from their cells' centres (by more than 0.05 spacing): those

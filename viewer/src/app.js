@@ -8,7 +8,7 @@ import { formatFragment, parseFragment } from './fragment.js';
 import { Kinematics } from './kinematics.js';
 import { ConcurrencyStrip } from './strip.js';
 import { Timeline } from './timeline.js';
-import { nextChangeTime, previousChangeTime } from './trace.js';
+import { CATOM3D, DATOM, nextChangeTime, previousChangeTime } from './trace.js';
 import { View3D } from './view3d.js';
 
 export const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 4, 8, 16, 32];
@@ -81,6 +81,10 @@ export class App {
     this.trace = trace;
     this.timeline = new Timeline(trace);
     this.kinematics = new Kinematics(trace.header);
+    // A 3D Catom has no pistons: what tells of them (the panel's pistons, the connector colours of
+    // the Datom's figures) is left out for Catoms.
+    this.moduleKind = trace.module ?? DATOM;
+    this.catoms = this.moduleKind === CATOM3D;
     this.duration = trace.duration;
     this.time = 0;
     this.speed = 1;
@@ -136,7 +140,10 @@ export class App {
       this.clockLine,
       element('div', {
         className: 'dv-subtitle',
-        text: `${header.modules.length} modules, r = ${header.dimensions.r}, t = ${header.dimensions.t ?? 0}` +
+        text:
+          (this.catoms
+            ? `${header.modules.length} 3D Catoms, r = ${header.dimensions.r}`
+            : `${header.modules.length} modules, r = ${header.dimensions.r}, t = ${header.dimensions.t ?? 0}`) +
           (this.duration > 0 ? `, ${formatTime(this.duration)}` : ', scene (no changes)'),
       }),
       this.distanceLine,
@@ -197,7 +204,9 @@ export class App {
       this.view.focus = on;
       this.redraw();
     });
-    this.focusToggle.wrapper.title = 'Fade every module but the selected one and those deforming or moving (X)';
+    this.focusToggle.wrapper.title = this.catoms
+      ? 'Fade every module but the selected one and those moving (X)'
+      : 'Fade every module but the selected one and those deforming or moving (X)';
     this.latchesToggle = checkbox('latches', false, (on) => {
       this.view.showLatches = on;
       this.redraw();
@@ -219,6 +228,8 @@ export class App {
       this.view.scheme = this.schemeSelect.value;
       this.redraw();
     });
+    // A Catom's connectors are always a darker shade of its colour.
+    this.schemeSelect.hidden = this.catoms;
 
     const disabled = this.duration <= 0;
     const transport = [
@@ -565,10 +576,12 @@ export class App {
       ['cell', m.inTransit ? `${m.cell.join(', ')} (moving)` : m.cell.join(', ')],
       ['orientation', String(m.o)],
       ['position', formatVector(m.position.toArray())],
-      ['piston', m.piston < 0 ? 'all at rest' : `${m.piston} at ${(100 * m.fraction).toFixed(0)} %`],
     ];
-    for (const other of m.otherPistons) {
-      rows.push(['also', `piston ${other.p} at ${(100 * other.fraction).toFixed(0)} %`]);
+    if (!this.catoms) {
+      rows.push(['piston', m.piston < 0 ? 'all at rest' : `${m.piston} at ${(100 * m.fraction).toFixed(0)} %`]);
+      for (const other of m.otherPistons) {
+        rows.push(['also', `piston ${other.p} at ${(100 * other.fraction).toFixed(0)} %`]);
+      }
     }
     for (const role of motionRoles(this.frame.motions, m.id)) rows.push(['motion', role]);
     const latched = [];
@@ -582,7 +595,7 @@ export class App {
     const swatch = element('span', { className: 'dv-swatch' });
     swatch.style.background = rgbToCss(m.rgb);
     this.panel.replaceChildren(
-      element('div', { className: 'dv-panel-title' }, [swatch, document.createTextNode(`Datom ${m.id}`)]),
+      element('div', { className: 'dv-panel-title' }, [swatch, document.createTextNode(`${this.catoms ? '3D Catom' : 'Datom'} ${m.id}`)]),
       element(
         'table',
         {},
@@ -602,6 +615,10 @@ export class App {
       duration: this.duration,
       changeTimes: this.trace.changeTimes,
       moduleCount: this.trace.header.modules.length,
+      moduleKind: this.moduleKind,
+      // The instanced meshes drawn (their kind and instance count) and, for Catoms, the bodies'
+      // centres as drawn.
+      drawn: () => this.view.drawn(),
       time: () => this.time,
       seek: (t) => this.pauseAndSeek(t),
       step: () => this.step(),

@@ -67,6 +67,14 @@ export function partColor(kind, rgb, scheme = 'paper') {
   }
 }
 
+// A 3D Catom's body is in the module's colour and its 12 square connectors a darker shade of it:
+// the squares are where it latches, and the shade tells them apart under any light.
+export const CATOM_CONNECTOR_SHADE = 0.4;
+
+export function catomPartColor(kind, rgb) {
+  return kind === 'connector' ? mixRgb(rgb, [0, 0, 0], CATOM_CONNECTOR_SHADE) : rgb;
+}
+
 export function rgbToCss(rgb) {
   return `rgb(${rgb[0]}, ${rgb[1]}, ${rgb[2]})`;
 }

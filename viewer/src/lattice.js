@@ -1,7 +1,7 @@
 // The skew FCC lattice of the simulator (docs/conventions.md, section 1; src/geometry/lattice.h):
-// cell centres in world space and the 12 neighbour directions. The viewer needs them for overlays
-// (distance maps and paths are given as cells) and to name the neighbour behind a latched
-// connector.
+// cell centres in world space, the 12 neighbour directions and the 6 piston axes. The viewer needs
+// them for overlays (distance maps and paths are given as cells), to name the neighbour behind a
+// latched connector, and to shape the 3D Catom (catom.js).
 
 // Offsets of the neighbour cell faced by direction d = 0..11
 // (docs/conventions.md, section 1 table).
@@ -18,6 +18,18 @@ export const NEIGHBOUR_OFFSETS = [
   [1, 0, -1],
   [1, 1, -1],
   [0, 1, -1],
+];
+
+// Twice the vector of piston axis a = 0..5, pointing at an octahedral hole, in skew cell units
+// (docs/conventions.md, section 2 table; src/geometry/lattice.h). Axes 0, 1 and 4 are the cube
+// frame's a, b and c, in which the 24 orientations are signed permutations.
+export const DOUBLED_AXES = [
+  [1, 1, 0],
+  [-1, 1, 0],
+  [-1, -1, 0],
+  [1, -1, 0],
+  [-1, -1, 2],
+  [1, 1, -2],
 ];
 
 // Centre of cell [x, y, z] for lattice spacing s:
@@ -40,6 +52,13 @@ export function offsetToWorld(offset, spacing) {
 // Unit world vector of direction d.
 export function directionVector(direction) {
   const v = offsetToWorld(NEIGHBOUR_OFFSETS[direction], 1);
+  const n = Math.hypot(v[0], v[1], v[2]);
+  return [v[0] / n, v[1] / n, v[2] / n];
+}
+
+// Unit world vector of piston axis a.
+export function axisVector(axis) {
+  const v = offsetToWorld(DOUBLED_AXES[axis], 1);
   const n = Math.hypot(v[0], v[1], v[2]);
   return [v[0] / n, v[1] / n, v[2] / n];
 }

@@ -8,6 +8,12 @@
 export const TRACE_FORMAT = 'datomsim-trace';
 export const TRACE_VERSION = 1;
 export const EVENT_KINDS = ['piston', 'turn', 'place', 'latch', 'color', 'motion', 'note', 'end'];
+// What the modules are (the header's optional "module", src/world/module_kind.h): the Datom of the
+// trace's kinematics, or the 3D Catom, a rigid body that only turns and is placed. A trace without
+// "module" is one of Datoms.
+export const MODULE_KINDS = ['datom', 'catom3d'];
+export const DATOM = 'datom';
+export const CATOM3D = 'catom3d';
 
 // Notes that say a request was refused (src/record/trace_writer.cpp): drawn as ticks on the
 // concurrency strip rather than as markers of the timeline.
@@ -120,6 +126,13 @@ export function checkHeader(header, line = 1) {
     `unsupported trace version ${JSON.stringify(header.version)}: this viewer reads version ${TRACE_VERSION}`,
     line,
   );
+  if ('module' in header) {
+    ensure(
+      MODULE_KINDS.includes(header.module),
+      `"module" must be "${MODULE_KINDS[0]}" or "${MODULE_KINDS[1]}", not ${JSON.stringify(header.module)}`,
+      line,
+    );
+  }
   ensure(isFiniteNumber(header.spacing) && header.spacing > 0, '"spacing" must be a positive number', line);
   ensure(
     header.dimensions && isFiniteNumber(header.dimensions.r) && header.dimensions.r > 0,
@@ -186,6 +199,11 @@ export function checkHeader(header, line = 1) {
   });
   checkTargets(header.targets, line);
   return header;
+}
+
+// The kind of the modules of a checked header: its "module", the Datom when it has none.
+export function moduleKindOf(header) {
+  return header.module ?? DATOM;
 }
 
 // Checks the header's optional "targets": a list of target shapes, each a list of cells
@@ -279,11 +297,12 @@ function checkEvent(kind, body, ids, line, t) {
   }
 }
 
-// Parses a whole trace. Returns {header, events, duration, changeTimes, notes, refusals, motions,
-// targets, overlay, end}: events sorted by time, then by their order in the file (the simulator
-// may write an event that starts later before one that starts now), each {t, kind, body, line,
-// seq}; motions {t, end, m, pivot, goal, blockers} from the "motion" lines, sorted by start;
-// notes split into refusals ("motion refused: ...") and the others.
+// Parses a whole trace. Returns {header, module, events, duration, changeTimes, notes, refusals,
+// motions, targets, overlay, end}: module the modules' kind (MODULE_KINDS); events sorted by time,
+// then by their order in the file (the simulator may write an event that starts later before one
+// that starts now), each {t, kind, body, line, seq}; motions {t, end, m, pivot, goal, blockers}
+// from the "motion" lines, sorted by start; notes split into refusals ("motion refused: ...") and
+// the others.
 export function parseTrace(text) {
   const values = splitJsonValues(text);
   if (values.length === 0) throw new TraceError('the trace is empty');
@@ -337,7 +356,8 @@ export function parseTrace(text) {
     header.overlay ?? (header.distances || header.path ? { distances: header.distances, path: header.path } : null),
     'header.overlay',
   );
-  return { header, events, duration, changeTimes, notes, refusals, motions, targets, overlay, end };
+  const module = moduleKindOf(header);
+  return { header, module, events, duration, changeTimes, notes, refusals, motions, targets, overlay, end };
 }
 
 // The first change time strictly after t, or null.

@@ -1,13 +1,24 @@
-// The 3D picture: every part of every module as an instanced box, the distance map and path
-// overlay, labels, picking and the camera. It draws frames that the timeline computed; it keeps no
-// simulation state of its own.
+// The 3D picture: every part of every Datom as an instanced box (or every 3D Catom as a body and 12
+// connector plates, catom.js), the distance map and path overlay, labels, picking and the camera.
+// It draws frames that the timeline computed; it keeps no simulation state of its own.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { CSS2DObject, CSS2DRenderer } from 'three/addons/renderers/CSS2DRenderer.js';
-import { LATCHED_CONNECTOR, PATH_COLOR, TARGET_EMPTY, TARGET_FILLED, distanceColor, mixRgb, partColor } from './colors.js';
+import { CatomModel, catomDepthBelowCentre } from './catom.js';
+import {
+  LATCHED_CONNECTOR,
+  PATH_COLOR,
+  TARGET_EMPTY,
+  TARGET_FILLED,
+  catomPartColor,
+  distanceColor,
+  mixRgb,
+  partColor,
+} from './colors.js';
 import { targetFill } from './concurrency.js';
 import { thickened } from './kinematics.js';
 import { cellToWorld } from './lattice.js';
+import { CATOM3D, DATOM } from './trace.js';
 
 // Parts thinner than this fraction of the radius are drawn this thick (a trace of the thin model
 // has t = 0: its plates would be invisible).
@@ -34,6 +45,9 @@ export class View3D {
     this.header = timeline.header;
     this.spacing = this.header.spacing;
     this.radius = this.header.dimensions.r;
+    // What the modules are: Datoms drawn from their parts, or 3D Catoms, rigid bodies.
+    this.moduleKind = timeline.trace.module ?? DATOM;
+    this.catoms = this.moduleKind === CATOM3D;
     this.scheme = 'paper';
     this.showLatches = false;
     this.selected = -1;
@@ -58,7 +72,8 @@ export class View3D {
     this.controls.addEventListener('change', () => this.render());
 
     this.buildLights();
-    this.buildModules();
+    if (this.catoms) this.buildCatoms();
+    else this.buildModules();
     this.buildGround();
     this.buildOverlay(overlay);
     this.buildTargets(timeline.trace.targets ?? []);
@@ -82,34 +97,81 @@ export class View3D {
     this.scene.add(fill);
   }
 
+  // An instanced mesh of `count` instances, drawn solid (with shadows) or, for focus mode, as a
+  // faded ghost: an instance is drawn by the solid mesh or its ghost and collapsed to nothing in
+  // the other.
+  instanced(geometry, material, count, { ghost = false } = {}) {
+    const mesh = new THREE.InstancedMesh(geometry, material, Math.max(1, count));
+    mesh.count = count;
+    mesh.castShadow = !ghost;
+    mesh.receiveShadow = !ghost;
+    mesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
+    mesh.frustumCulled = false;
+    const white = new THREE.Color(1, 1, 1);
+    for (let i = 0; i < count; ++i) mesh.setColorAt(i, white);
+    this.scene.add(mesh);
+    return mesh;
+  }
+
+  ghostMaterial() {
+    return new THREE.MeshLambertMaterial({ transparent: true, opacity: 0.07, depthWrite: false });
+  }
+
   // One instance per part per module, in header order: instance = module * parts + part.
   buildModules() {
     const count = this.header.modules.length * this.kinematics.partCount;
     const geometry = new THREE.BoxGeometry(1, 1, 1);
     const material = new THREE.MeshStandardMaterial({ roughness: 0.55, metalness: 0.05 });
-    this.mesh = new THREE.InstancedMesh(geometry, material, Math.max(1, count));
-    this.mesh.count = count;
-    this.mesh.castShadow = true;
-    this.mesh.receiveShadow = true;
-    this.mesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
-    this.mesh.frustumCulled = false;
-    for (let i = 0; i < count; ++i) this.mesh.setColorAt(i, new THREE.Color(1, 1, 1));
-    this.scene.add(this.mesh);
-    // Focus mode draws the modules out of focus here, faded; an instance is drawn by one mesh
-    // and collapsed to nothing in the other.
-    this.ghostMesh = new THREE.InstancedMesh(
-      geometry,
-      new THREE.MeshLambertMaterial({ transparent: true, opacity: 0.07, depthWrite: false }),
-      Math.max(1, count),
-    );
-    this.ghostMesh.count = count;
-    this.ghostMesh.instanceMatrix.setUsage(THREE.DynamicDrawUsage);
-    this.ghostMesh.frustumCulled = false;
-    for (let i = 0; i < count; ++i) this.ghostMesh.setColorAt(i, new THREE.Color(1, 1, 1));
-    this.scene.add(this.ghostMesh);
+    this.mesh = this.instanced(geometry, material, count);
+    this.ghostMesh = this.instanced(geometry, this.ghostMaterial(), count, { ghost: true });
+    this.solidMeshes = [this.mesh];
+    this.ghostMeshes = [this.ghostMesh];
     this.focus = false;
     this.collapsed = new THREE.Matrix4().makeScale(0, 0, 0);
     this.partPose = { centre: new THREE.Vector3(), quaternion: new THREE.Quaternion(), size: new THREE.Vector3() };
+  }
+
+  // 3D Catoms: one body per module (instance = module) and 12 connector plates per module
+  // (instance = module * 12 + connector), each with its ghost for focus mode. Flat-shaded: the
+  // faces of the polyhedron read as faces.
+  buildCatoms() {
+    const n = this.header.modules.length;
+    this.catomModel = new CatomModel(this.spacing / 2);
+    const material = () => new THREE.MeshStandardMaterial({ roughness: 0.55, metalness: 0.05, flatShading: true });
+    const body = this.catomModel.bodyGeometry();
+    const plate = new THREE.BoxGeometry(1, 1, 1);
+    this.bodyMesh = this.instanced(body, material(), n);
+    this.connectorMesh = this.instanced(plate, material(), 12 * n);
+    this.ghostBodyMesh = this.instanced(body, this.ghostMaterial(), n, { ghost: true });
+    this.ghostConnectorMesh = this.instanced(plate, this.ghostMaterial(), 12 * n, { ghost: true });
+    this.solidMeshes = [this.bodyMesh, this.connectorMesh];
+    this.ghostMeshes = [this.ghostBodyMesh, this.ghostConnectorMesh];
+    this.focus = false;
+    this.collapsed = new THREE.Matrix4().makeScale(0, 0, 0);
+    this.catomMatrices = this.catomModel.matrices(new THREE.Vector3(), new THREE.Quaternion());
+  }
+
+  // What is drawn, for tests and the console: the module kind, the instances of each solid mesh,
+  // and for Catoms the centre of every body as drawn.
+  drawn() {
+    const matrix = new THREE.Matrix4();
+    const centre = new THREE.Vector3();
+    const bodies = [];
+    if (this.catoms) {
+      for (let i = 0; i < this.bodyMesh.count; ++i) {
+        this.bodyMesh.getMatrixAt(i, matrix);
+        bodies.push(centre.setFromMatrixPosition(matrix).toArray());
+      }
+    }
+    return {
+      module: this.moduleKind,
+      meshes: this.solidMeshes.map((mesh) => ({
+        kind: mesh === this.bodyMesh ? 'catom body' : mesh === this.connectorMesh ? 'catom connector' : 'datom part',
+        instances: mesh.count,
+        triangles: (mesh.geometry.index ?? mesh.geometry.attributes.position).count / 3,
+      })),
+      bodies,
+    };
   }
 
   // The scene's extent from the initial module centres (and overlay cells), padded by a module.
@@ -127,10 +189,12 @@ export class View3D {
     const box = this.bounds();
     const size = box.getSize(new THREE.Vector3());
     const centre = box.getCenter(new THREE.Vector3());
-    // The lowest point of a module at rest lies (r + c/2) / sqrt2 below its centre (a piston
-    // plate); the ground plane touches the lowest modules there.
+    // The lowest point of a Datom at rest lies (r + c/2) / sqrt2 below its centre (a piston
+    // plate), a Catom's lowest point is an octagon; the ground plane touches the lowest modules
+    // there.
     const c = this.header.dimensions.c ?? 0.61678 * this.radius;
-    const groundZ = box.min.z + this.radius - (this.radius + c / 2) / Math.SQRT2 - 0.01 * this.radius;
+    const below = this.catoms ? catomDepthBelowCentre(this.spacing / 2) : (this.radius + c / 2) / Math.SQRT2;
+    const groundZ = box.min.z + this.radius - below - 0.01 * this.radius;
     const extent = Math.max(size.x, size.y) * 1.6 + 4 * this.spacing;
     const ground = new THREE.Mesh(
       new THREE.PlaneGeometry(extent, extent),
@@ -317,8 +381,25 @@ export class View3D {
     this.overlayGroup.visible = visible;
   }
 
-  // Puts every part of every module where the frame says.
+  // Puts every module where the frame says.
   update(frame) {
+    if (this.catoms) this.updateCatoms(frame);
+    else this.updateDatoms(frame);
+    for (const m of frame.modules) this.labels[m.index].position.copy(m.position);
+    // Out of focus mode the ghosts are all collapsed: not drawing them halves a software
+    // renderer's work (headless Chromium's, which makes the videos).
+    for (const ghost of this.ghostMeshes) ghost.visible = this.focus;
+    for (const mesh of [...this.solidMeshes, ...this.ghostMeshes]) {
+      mesh.instanceMatrix.needsUpdate = true;
+      if (mesh.instanceColor) mesh.instanceColor.needsUpdate = true;
+      mesh.computeBoundingSphere();
+    }
+    this.frame = frame;
+    this.updateTargets(frame);
+  }
+
+  // Every part of every Datom.
+  updateDatoms(frame) {
     const kin = this.kinematics;
     const parts = kin.partCount;
     const minThickness = MIN_THICKNESS * this.radius;
@@ -349,19 +430,34 @@ export class View3D {
         if (selected) rgb = mixRgb(rgb, [255, 255, 255], 0.45);
         shown.setColorAt(instance, color.copy(colorOf(rgb)));
       }
-      const label = this.labels[m.index];
-      label.position.copy(m.position);
     }
-    // Out of focus mode the ghosts are all collapsed: not drawing them halves a software
-    // renderer's work (headless Chromium's, which makes the videos).
-    this.ghostMesh.visible = this.focus;
-    for (const mesh of [this.mesh, this.ghostMesh]) {
-      mesh.instanceMatrix.needsUpdate = true;
-      if (mesh.instanceColor) mesh.instanceColor.needsUpdate = true;
-      mesh.computeBoundingSphere();
+  }
+
+  // Every Catom: its body turned as the frame says, its connector plates with it. A Catom has no
+  // pistons: in focus mode only the selected module and those moving stay solid.
+  updateCatoms(frame) {
+    const matrices = this.catomMatrices;
+    const color = new THREE.Color();
+    for (const m of frame.modules) {
+      this.catomModel.matrices(m.position, m.quaternion, matrices);
+      const selected = m.index === this.selected;
+      const solid = !this.focus || selected || m.inTransit;
+      const [body, ghostBody] = solid ? [this.bodyMesh, this.ghostBodyMesh] : [this.ghostBodyMesh, this.bodyMesh];
+      const [plates, ghostPlates] = solid
+        ? [this.connectorMesh, this.ghostConnectorMesh]
+        : [this.ghostConnectorMesh, this.connectorMesh];
+      const shade = (rgb) => colorOf(selected ? mixRgb(rgb, [255, 255, 255], 0.45) : rgb);
+      body.setMatrixAt(m.index, matrices.body);
+      ghostBody.setMatrixAt(m.index, this.collapsed);
+      body.setColorAt(m.index, color.copy(shade(catomPartColor('body', m.rgb))));
+      for (let d = 0; d < 12; ++d) {
+        const instance = m.index * 12 + d;
+        plates.setMatrixAt(instance, matrices.connectors[d]);
+        ghostPlates.setMatrixAt(instance, this.collapsed);
+        const latched = this.showLatches && m.latches & (1 << d);
+        plates.setColorAt(instance, color.copy(shade(latched ? LATCHED_CONNECTOR : catomPartColor('connector', m.rgb))));
+      }
     }
-    this.frame = frame;
-    this.updateTargets(frame);
   }
 
   render() {
@@ -443,9 +539,12 @@ export class View3D {
     );
     const raycaster = new THREE.Raycaster();
     raycaster.setFromCamera(pointer, this.camera);
-    const hits = raycaster.intersectObject(this.mesh, false);
+    const hits = raycaster.intersectObjects(this.solidMeshes, false);
     if (hits.length === 0 || hits[0].instanceId === undefined) return -1;
-    return Math.floor(hits[0].instanceId / this.kinematics.partCount);
+    const hit = hits[0];
+    if (hit.object === this.bodyMesh) return hit.instanceId;
+    if (hit.object === this.connectorMesh) return Math.floor(hit.instanceId / 12);
+    return Math.floor(hit.instanceId / this.kinematics.partCount);
   }
 
   // Screen position (client coordinates) of a module's centre in the current frame.

@@ -1,8 +1,10 @@
 import assert from 'node:assert/strict';
 import { describe, it } from 'node:test';
 import {
+  MODULE_KINDS,
   TraceError,
   checkOverlay,
+  moduleKindOf,
   nextChangeTime,
   parseTrace,
   previousChangeTime,
@@ -106,6 +108,44 @@ describe('parseTrace refusals', () => {
   it('ignores changes of a kind it does not know', () => {
     const trace = parseTrace(syntheticTrace({ modules, events: [{ t: 1, sparkle: { m: 1 } }] }));
     assert.equal(trace.events.length, 0);
+  });
+});
+
+describe("the header's module kind", () => {
+  const modules = [module(1, [0, 0, 0]), module(2, [1, 0, 0])];
+
+  it('is the Datom when the header has no "module"', () => {
+    const trace = parseTrace(syntheticTrace({ modules }));
+    assert.equal('module' in trace.header, false);
+    assert.equal(trace.module, 'datom');
+    assert.equal(moduleKindOf(trace.header), 'datom');
+  });
+
+  it('reads "catom3d" and "datom"', () => {
+    assert.deepEqual(MODULE_KINDS, ['datom', 'catom3d']);
+    assert.equal(parseTrace(syntheticTrace({ modules, header: { module: 'catom3d' } })).module, 'catom3d');
+    assert.equal(parseTrace(syntheticTrace({ modules, header: { module: 'datom' } })).module, 'datom');
+  });
+
+  it('refuses any other value, naming the field and the value', () => {
+    const cases = [
+      ['sphere', '"sphere"'],
+      ['Catom3D', '"Catom3D"'],
+      [3, '3'],
+      [null, 'null'],
+      [['catom3d'], '["catom3d"]'],
+    ];
+    for (const [value, written] of cases) {
+      assert.throws(
+        () => parseTrace(syntheticTrace({ modules, header: { module: value } })),
+        (error) => {
+          assert.ok(error instanceof TraceError, String(error));
+          assert.equal(error.message, `line 1: "module" must be "datom" or "catom3d", not ${written}`);
+          return true;
+        },
+        JSON.stringify(value),
+      );
+    }
   });
 });
 

@@ -133,6 +133,15 @@ TEST(SceneTrace, IsAHeaderWithTheScene) {
   EXPECT_EQ(header["kinematics"]["rest"].size(), 43u);
 }
 
+TEST(SceneTrace, NamesTheModuleKindOfACatomScene) {
+  const std::string catoms = sceneTrace(twoModules(), "scene", world::ModuleKind::kCatom3D);
+  ASSERT_TRUE(checkTrace(catoms, "scene").ok()) << checkTrace(catoms, "scene").error();
+  EXPECT_EQ(nlohmann::json::parse(catoms)["module"], "catom3d");
+  EXPECT_FALSE(nlohmann::json::parse(sceneTrace(twoModules(), "scene")).contains("module"));
+  EXPECT_EQ(sceneTrace(twoModules(), "scene", world::ModuleKind::kDatom),
+            sceneTrace(twoModules(), "scene"));
+}
+
 TEST(Overlay, AcceptsTheReachDocumentAndRefusesMalformedOnes) {
   const auto ok = checkOverlay(
       R"({"goal":[6,5,2],"rules":"paper","path":[[0,0,2],[6,5,2]],"distances":[[6,5,2,0]]})",
@@ -205,6 +214,27 @@ TEST(PageForFile, ReadsTracesAndScenes) {
   ASSERT_TRUE(fromScene.ok()) << fromScene.error();
   EXPECT_EQ(fromScene->title, "pair");
   EXPECT_TRUE(checkTrace(fromScene->trace, "x").ok());
+}
+
+// `datomsim view SCENE` of a scene of 3D Catoms: the page's trace names the Catom, so that the
+// page draws Catoms; a Datom scene's page names no module.
+TEST(PageForFile, GivesTheScenesModuleKindToTheTrace) {
+  TemporaryDirectory directory;
+  io::Scene scene;
+  scene.world = twoModules();
+  scene.moduleKind = world::ModuleKind::kCatom3D;
+  const auto catomPath = directory.path() / "catoms.json";
+  ASSERT_TRUE(io::writeScene(scene, catomPath).ok());
+  const auto catoms = pageForFile(catomPath);
+  ASSERT_TRUE(catoms.ok()) << catoms.error();
+  EXPECT_EQ(nlohmann::json::parse(catoms->trace)["module"], "catom3d");
+
+  scene.moduleKind = world::ModuleKind::kDatom;
+  const auto datomPath = directory.path() / "datoms.json";
+  ASSERT_TRUE(io::writeScene(scene, datomPath).ok());
+  const auto datoms = pageForFile(datomPath);
+  ASSERT_TRUE(datoms.ok()) << datoms.error();
+  EXPECT_FALSE(nlohmann::json::parse(datoms->trace).contains("module"));
 }
 
 TEST(PageForFile, RefusesWhatIsNeitherATraceNorAScene) {

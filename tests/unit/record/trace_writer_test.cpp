@@ -96,5 +96,34 @@ TEST(TraceWriter, RecordsAMotionAsTheSimulatorAnnouncesIt) {
   EXPECT_LT(on, off);
 }
 
+// The header names the module kind for 3D Catoms only: a Datom trace stays byte for byte what it
+// was, without "module", whether the kind is given or not.
+TEST(TraceWriter, NamesTheModuleKindInTheHeaderOfACatomWorldOnly) {
+  const world::World world = WorldBuilder().module({0, 0, 0}).module({1, 0, 0}).build();
+  TraceWriter catoms(world::ModuleKind::kCatom3D);
+  catoms.header(world, "two Catoms");
+  const nlohmann::json catomHeader = lines(catoms.text()).front();
+  EXPECT_EQ(catomHeader["module"], "catom3d");
+  EXPECT_EQ(catoms.text().rfind(R"({"format":"datomsim-trace","version":1,"module":"catom3d",)", 0),
+            0u);
+  // The rest of the header is the Datom's, modules included: the viewer reads both alike.
+  EXPECT_EQ(catomHeader["modules"].size(), 2u);
+  EXPECT_EQ(catomHeader["orientations"].size(), 24u);
+
+  TraceWriter datoms;
+  datoms.header(world, "two Catoms");
+  EXPECT_FALSE(lines(datoms.text()).front().contains("module"));
+  EXPECT_EQ(datoms.text().find("\"module\""), std::string::npos);
+  TraceWriter named(world::ModuleKind::kDatom);
+  named.header(world, "two Catoms");
+  EXPECT_EQ(named.text(), datoms.text());
+  // Apart from the field, the two headers are the same bytes.
+  const std::string field = R"("module":"catom3d",)";
+  std::string withoutField = catoms.text();
+  const size_t at = withoutField.find(field);
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_EQ(withoutField.erase(at, field.size()), datoms.text());
+}
+
 }  // namespace
 }  // namespace datomsim::record

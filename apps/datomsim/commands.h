@@ -50,6 +50,9 @@ struct RunArguments {
   double timeoutS = 0, untilS = 0;
   bool stats = false;
   RuleArguments rules;
+  // The modules' kind (empty: the scene's) and the 3D Catom's rule set (docs/catom3d.md).
+  std::string module;
+  std::string rolling = "symmetric";
   std::string seed = "1";
   double delayMs = 10, jitterMs = 0;
   int maxMotions = 0;

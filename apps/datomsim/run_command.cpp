@@ -151,6 +151,16 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
                       "The mobile's start x,y,z: the module there, else the one at the goal moved "
                       "there, else a new module");
   args->rules.addTo(*command);
+  command
+      ->add_option("--module", args->module,
+                   "The modules: datom or catom3d, 3D Catoms that roll (default: the scene "
+                   "file's; docs/catom3d.md)")
+      ->check(CLI::IsMember({"datom", "catom3d"}));
+  command
+      ->add_option("--rolling", args->rolling,
+                   "The 3D Catom's rules: symmetric or visiblesim (docs/catom3d.md)")
+      ->check(CLI::IsMember({"symmetric", "visiblesim"}))
+      ->capture_default_str();
   command->add_option("--seed", args->seed, "Seed of the modules' random streams and delays")
       ->capture_default_str();
   command->add_option("--delay-ms", args->delayMs, "Message delay in milliseconds")
@@ -211,13 +221,16 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
 
 RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArguments& args,
                      std::span<const ProgramEntry> added) {
-  if (scene.moduleKind == world::ModuleKind::kCatom3D) {
-    throw UsageError(fmt::format(
-        "{}: its modules are 3D Catoms, and the simulator runs Datoms only (their rolls are not "
-        "simulated yet): reach, moves, verify and compare take Catom scenes (docs/catom3d.md)",
-        sceneName));
-  }
   experiment::RunRequest request;
+  if (!args.module.empty()) {
+    const auto kind = world::moduleKindNamed(args.module);
+    if (!kind) throw UsageError("--module: " + args.module + " not in {datom,catom3d}");
+    scene.moduleKind = *kind;
+  }
+  const auto rolling = catom3d::rollRulesNamed(args.rolling);
+  if (!rolling) throw UsageError("--rolling: " + args.rolling + " not in {symmetric,visiblesim}");
+  request.simulation.moduleKind = scene.moduleKind;
+  request.simulation.rolling = *rolling;
   request.program = args.program;
   request.added = added;
   // The command line's --program check, for callers that did not pass through it (Python).

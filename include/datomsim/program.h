@@ -49,7 +49,8 @@ struct Motion {
   Cell from;
   Cell goal;
   std::vector<Helper> helpers;
-  // The rule's number in the table of 72 (stable across runs), and a sentence for logs.
+  // The rule's number in the table of 72 (stable across runs; a 3D Catom's: its roll's in the
+  // table of 96, docs/catom3d.md), and a sentence for logs.
   int rule = -1;
   std::string description;
 };

@@ -9,13 +9,25 @@ namespace datomsim::api {
 
 namespace {
 
+// A motion's number: its rule's in the table of 72, or a 3D Catom's roll's in the table of 96 (a
+// world holds one kind of module, so the two never meet).
+int numberOf(const motion::Motion& motion) {
+  return motion.rule ? motion.rule->index : motion.roll;
+}
+
 Motion toPublic(const motion::Motion& motion) {
   Motion out;
   out.pivot = motion.pivot;
   out.pivotCell = motion.pivotCell;
   out.from = motion.from;
   out.goal = motion.goal;
-  out.rule = motion.rule->index;
+  out.rule = numberOf(motion);
+  if (!motion.rule) {
+    out.description =
+        fmt::format("roll {} about module {} at {} to {}", motion.roll, motion.pivot.value,
+                    toString(motion.pivotCell), toString(motion.goal));
+    return out;
+  }
   for (const motion::Deformation& deformation : motion.deformations) {
     out.helpers.push_back(
         {deformation.module, deformation.cell, deformation.firstAxis, deformation.secondAxis});
@@ -105,7 +117,7 @@ MoveResult ContextAdapter::move(const Motion& wanted) {
                   wanted.rule, wanted.pivot.value, toString(context_.cell()));
   for (const motion::Evaluation& evaluation : context_.motions()) {
     if (const auto* motion = std::get_if<motion::Motion>(&evaluation)) {
-      if (motion->rule->index == wanted.rule && motion->pivot == wanted.pivot) {
+      if (numberOf(*motion) == wanted.rule && motion->pivot == wanted.pivot) {
         return context_.move(*motion);
       }
     } else if (const auto& refused = std::get<motion::Refusal>(evaluation);

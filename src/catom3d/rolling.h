@@ -73,6 +73,11 @@ struct Roll {
   int ownCellCount;
 };
 
+// The face of the roll numbered `index` in the table (Roll::index).
+constexpr Face faceOf(int index) {
+  return index % 2 ? Face::kOctagonal : Face::kHexagonal;
+}
+
 // The 96 rolls (12 mobile directions x 4 goals x 2 faces), built once; pass it by const
 // reference.
 class RollTable {

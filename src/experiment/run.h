@@ -50,8 +50,6 @@ struct RunRequest {
   std::optional<geometry::Cell> start;
   sim::SimulationOptions simulation;
   bool trace = false;
-  // What the modules are, for the trace's header (the viewer draws that module).
-  world::ModuleKind moduleKind = world::ModuleKind::kDatom;
   std::string description;
   // The cells of the scene's target shapes: the viewer draws them; reconfigure builds the first.
   std::vector<std::vector<geometry::Cell>> targets;

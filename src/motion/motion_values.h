@@ -46,9 +46,11 @@ struct Deformation {
   CellRole role = CellRole::kC;
 };
 
-// A valid motion of a mobile around a pivot.
+// A valid motion of a mobile around a pivot: a Datom's rule, or a 3D Catom's roll (rule null;
+// catom3d/rolling.h, which this layer does not interpret).
 struct Motion {
   const Rule* rule = nullptr;
+  int roll = -1;  // the roll's index in catom3d::RollTable, for a Catom
   ModuleId pivot;
   geometry::Cell pivotCell;
   geometry::Cell from;

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
+#include "catom3d/rolling.h"
 #include "datom/linkage.h"
 #include "datom/parts.h"
 #include "geometry/lattice.h"
@@ -169,10 +170,16 @@ void TraceWriter::pistonMoving(Time, const sim::PistonMove& move) {
 }
 
 void TraceWriter::motionStarted(Time t, const sim::MotionStart& start) {
-  const motion::Rule& rule = *start.plan->rule;
-  note(t, fmt::format("module {} turns {} about pivot {} (piston {}) towards {}",
-                      start.mobile.value, motion::toString(rule.turn), start.pivot.value, rule.up,
-                      geometry::toString(start.plan->goal)));
+  if (const motion::Rule* rule = start.plan->rule) {
+    note(t, fmt::format("module {} turns {} about pivot {} (piston {}) towards {}",
+                        start.mobile.value, motion::toString(rule->turn), start.pivot.value,
+                        rule->up, geometry::toString(start.plan->goal)));
+  } else {
+    note(t, fmt::format("module {} rolls about pivot {} through the {} face towards {}",
+                        start.mobile.value, start.pivot.value,
+                        catom3d::toString(catom3d::faceOf(start.plan->roll)),
+                        geometry::toString(start.plan->goal)));
+  }
   // The motion as a whole, for timelines: who moves, about which pivot, which modules make way,
   // and when it ends.
   const geometry::Cell& goal = start.plan->goal;
@@ -215,6 +222,21 @@ void TraceWriter::turnStarted(Time t, const sim::QuarterTurn& turn) {
                  "\"d\":{},\"progress\":[{}]}}}}\n",
                  seconds(t), turn.mobile.value, vec(geometry::axisVector(turn.axis)), vec(centre),
                  number(turn.degrees), seconds(turn.duration), progress);
+}
+
+void TraceWriter::rollStarted(Time t, const sim::RollTurn& roll) {
+  // One rigid turn about the normal of the triangle pivot, start, goal through its centre, which
+  // takes the start to the goal (docs/catom3d.md, "In the simulator").
+  const Vec3 p = geometry::worldPosition(roll.pivotCell, spacing());
+  const Vec3 m = geometry::worldPosition(roll.from, spacing());
+  const Vec3 d = geometry::worldPosition(roll.goal, spacing());
+  const Vec3 axis = geometry::normalized(geometry::cross(m - p, d - p));
+  const Vec3 centre = (p + m + d) * (1.0 / 3.0);
+  fmt::format_to(std::back_inserter(text_),
+                 "{{\"t\":{},\"turn\":{{\"m\":{},\"axis\":{},\"centre\":{},\"deg\":{},"
+                 "\"d\":{}}}}}\n",
+                 seconds(t), roll.mobile.value, vec(axis), vec(centre), number(roll.degrees),
+                 seconds(roll.duration));
 }
 
 Vec3 TraceWriter::hinge(const Vec3& pivot, int up, int side) const {

@@ -49,6 +49,7 @@ class TraceWriter final : public sim::Observer {
   void deformationRefused(Time t, ModuleId module, std::string_view reason,
                           const std::string& text) override;
   void turnStarted(Time t, const sim::QuarterTurn& turn) override;
+  void rollStarted(Time t, const sim::RollTurn& roll) override;
   void modulePlaced(Time t, const world::Module& module) override;
   void colorChanged(Time t, ModuleId module, Color color) override;
   void programLog(Time t, ModuleId module, std::string_view text) override;

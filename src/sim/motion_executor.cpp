@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "geometry/lattice.h"
 
@@ -19,6 +20,16 @@ MoveRefusal refusal(MoveRefusal::Reason reason, std::string text) {
   refused.reason = reason;
   refused.text = std::move(text);
   return refused;
+}
+
+// The rotation of the lattice's group taking world direction a to b and c to d (two pairs that
+// are not opposite fix it).
+Orientation rotationTaking(int a, int b, int c, int d) {
+  for (int code = 0; code < Orientation::kCount; ++code) {
+    const Orientation rotation = *Orientation::fromCode(code);
+    if (rotation.worldDirection(a) == b && rotation.worldDirection(c) == d) return rotation;
+  }
+  throw std::logic_error("no rotation of the lattice takes these directions there");
 }
 
 }  // namespace
@@ -115,8 +126,9 @@ MoveRefusal MotionExecutor::refuse(uint32_t mobileIndex, MoveRefusal refused) co
 
 MoveResult MotionExecutor::request(uint32_t index, const motion::Motion& request) {
   const Module& mobile = world_.modules()[index];
-  if (!request.rule) {
-    return refuse(index, refusal(MoveRefusal::Reason::kInvalidRequest, "the motion names no rule"));
+  if (!request.rule && (request.roll < 0 || request.roll >= catom3d::RollTable::kRollCount)) {
+    return refuse(index, refusal(MoveRefusal::Reason::kInvalidRequest,
+                                 "the motion names no rule and no roll"));
   }
   if (request.from != mobile.cell) {
     return refuse(index, refusal(MoveRefusal::Reason::kInvalidRequest,
@@ -150,10 +162,8 @@ MoveResult MotionExecutor::request(uint32_t index, const motion::Motion& request
   return tryStart(index, request);
 }
 
-MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& request) {
-  const Module& mobile = world_.modules()[index];
-  // The world may have changed since the motion was listed: judge the rule again now.
-  const Cell pivotCell = mobile.cell - request.rule->mobileOffset;
+std::variant<uint32_t, MoveRefusal> MotionExecutor::servingPivot(uint32_t index,
+                                                                 const Cell& pivotCell) {
   const Module* pivot = world_.moduleAt(pivotCell);
   if (!pivot) {
     return refuse(index, refusal(MoveRefusal::Reason::kRule,
@@ -179,6 +189,17 @@ MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& reques
     refused.module = pivot->id;
     return refuse(index, std::move(refused));
   }
+  return pivotIndex;
+}
+
+MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& request) {
+  if (!request.rule) return tryStartRoll(index, request);
+  const Module& mobile = world_.modules()[index];
+  // The world may have changed since the motion was listed: judge the rule again now.
+  const Cell pivotCell = mobile.cell - request.rule->mobileOffset;
+  auto serving = servingPivot(index, pivotCell);
+  if (auto* refused = std::get_if<MoveRefusal>(&serving)) return MoveResult(std::move(*refused));
+  const Module* pivot = &world_.modules()[std::get<uint32_t>(serving)];
   // Judged as when it was chosen: the latches its own helpers' compressions let go count as made
   // (motion::Compressions); a double deformation's second piston, say, is compressed only after
   // the first is back and latched again.
@@ -292,6 +313,149 @@ void MotionExecutor::begin(uint32_t index, const motion::Motion& motion, Claim c
   agenda_.schedule(now + times_.quarterTurn, EventKind::kMotionMiddle, index, slot);
 }
 
+MoveResult MotionExecutor::tryStartRoll(uint32_t index, const motion::Motion& request) {
+  const Module& mobile = world_.modules()[index];
+  const catom3d::Roll& roll = rolls_.all()[size_t(request.roll)];
+  const Cell pivotCell = mobile.cell - roll.mobileOffset;
+  auto serving = servingPivot(index, pivotCell);
+  if (auto* refused = std::get_if<MoveRefusal>(&serving)) return MoveResult(std::move(*refused));
+  // Judged again on the world as it is now, with the real mobile.
+  const catom3d::RollEvaluation judged =
+      catom3d::evaluate(world_, roll, {mobile.cell, mobile.id}, limits_.rolling);
+  if (const auto* rollRefusal = std::get_if<catom3d::RollRefusal>(&judged)) {
+    MoveRefusal refused =
+        refusal(MoveRefusal::Reason::kRule, catom3d::describe(*rollRefusal, mobile.cell));
+    refused.cell = rollRefusal->cell;
+    refused.module = rollRefusal->blocker;
+    return refuse(index, std::move(refused));
+  }
+  const catom3d::RollMotion& rolled = std::get<catom3d::RollMotion>(judged);
+  motion::Motion motion = request;
+  motion.pivot = rolled.pivot;
+  motion.pivotCell = rolled.pivotCell;
+  motion.goal = rolled.goal;
+  motion.deformations.clear();
+  // What the roll holds: its cells that are empty now (the goal first), its mobile and pivot.
+  Claim claim;
+  claim.mobile = index;
+  claim.pivot = std::get<uint32_t>(serving);
+  const int cellCount =
+      limits_.rolling == catom3d::RollRules::kSymmetric ? roll.cellCount : roll.ownCellCount;
+  for (int i = 0; i < cellCount; ++i) {
+    const Cell cell = pivotCell + roll.cells[size_t(i)].offset;
+    if (world_.isInside(cell) && !world_.moduleAt(cell)) claim.cells.push_back(cell);
+  }
+  if (auto conflict = reservations_.conflict(world_, claim)) return refuse(index, *conflict);
+  if (limits_.connectivity) {
+    // The mobile lets go of all but its pivot while it rolls.
+    std::vector<world::BrokenLatch> broken;
+    const int hinge = geometry::oppositeDirection(roll.mobileDirection);
+    for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
+      if (direction != hinge) world::addBrokenLatch(world_, mobile, direction, broken);
+    }
+    if (const auto cut = cutOff(std::move(broken)); !cut.empty()) {
+      MoveRefusal refused;
+      refused.reason = MoveRefusal::Reason::kWouldDisconnect;
+      for (const uint32_t i : cut) refused.cutOff.push_back(world_.modules()[i].id);
+      std::sort(refused.cutOff.begin(), refused.cutOff.end());
+      refused.text = "the ensemble would fall apart: " + motion::describeCutOff(refused.cutOff);
+      return refuse(index, std::move(refused));
+    }
+  }
+  beginRoll(index, motion, std::move(claim));
+  return MoveResult::started();
+}
+
+void MotionExecutor::beginRoll(uint32_t index, const motion::Motion& motion, Claim claim) {
+  const catom3d::Roll& roll = rolls_.all()[size_t(motion.roll)];
+  const uint32_t pivotIndex = claim.pivot;
+  const Module& pivot = world_.modules()[pivotIndex];
+  const Module& mobile = world_.modules()[index];
+  const int slot = freeSlot();
+  ActiveMotion& active = motions_[slot];
+  active = ActiveMotion{};
+  active.active = true;
+  active.plan = motion;
+  active.mobile = index;
+  active.pivot = pivotIndex;
+  // The contact rolls from the pivot's connector facing the start to the one facing the goal, and
+  // on the mobile from its connector facing the pivot to the one that faced the goal (rolling
+  // without slipping mirrors the one path in the other).
+  active.pivotOld = pivot.orientation.ownConnector(roll.mobileDirection);
+  active.mobileOld =
+      mobile.orientation.ownConnector(geometry::oppositeDirection(roll.mobileDirection));
+  active.pivotNew = pivot.orientation.ownConnector(roll.goalDirection);
+  const int towardsGoal = *geometry::directionOfOffset(roll.goalOffset - roll.mobileOffset);
+  active.mobileNew = mobile.orientation.ownConnector(towardsGoal);
+  // The body turns by a third of a turn about the normal of the triangle pivot, start, goal (a
+  // rotation of the lattice's group): the start goes to the goal, the pivot to the start, so the
+  // connector that faced the goal faces the pivot and the one that faced the pivot faces back.
+  active.end = mobile.orientation.then(rotationTaking(
+      towardsGoal, geometry::oppositeDirection(roll.goalDirection),
+      geometry::oppositeDirection(roll.mobileDirection), geometry::oppositeDirection(towardsGoal)));
+  active.middle = active.end;
+  const Time now = agenda_.now();
+  active.start = now;
+  active.until = now + 2 * times_.quarterTurn;
+  active.claim = std::move(claim);
+  reservations_.reserve(active.claim, {slot, mobile.id, active.until});
+  if (motionOf_.empty()) motionOf_.assign(world_.size(), -1);
+  motionOf_[index] = static_cast<int16_t>(slot);
+  motionOf_[pivotIndex] = static_cast<int16_t>(slot);
+  ++activeCount_;
+  // The Catom lets go of everything but its pivot, and rolls.
+  for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
+    if (direction == geometry::oppositeDirection(roll.mobileDirection)) continue;
+    if (world_.isLatched(mobile, direction)) mechanics_.setLatched(mobile, direction, false);
+  }
+  announce_(&Observer::motionStarted, now,
+            MotionStart{mobile.id, pivot.id, &active.plan, active.until});
+  announce_(&Observer::rollStarted, now,
+            RollTurn{mobile.id, pivot.id, pivot.cell, motion.from, motion.goal, 120.0,
+                     active.until - now});
+  agenda_.schedule(active.until, EventKind::kMotionEnd, index, slot);
+}
+
+Result<MotionExecutor::Arrival> MotionExecutor::endRoll(int slot) {
+  ActiveMotion& active = motions_[slot];
+  const ModuleId mobileId = world_.modules()[active.mobile].id;
+  const Module& pivot = world_.modules()[active.pivot];
+  const Time now = agenda_.now();
+  reservations_.release(active.claim, slot);
+  const Status moved = world_.move(mobileId, active.plan.goal);
+  if (!moved.ok()) return Error{"the mobile cannot arrive: " + moved.error()};
+  const Status turned = world_.setOrientation(mobileId, active.end);
+  if (!turned.ok()) return Error{turned.error()};
+  const Module& arrived = world_.modules()[active.mobile];
+  const int towardsPivot = *geometry::directionOfOffset(pivot.cell - arrived.cell);
+  if (arrived.orientation.worldDirection(active.mobileNew) != towardsPivot ||
+      pivot.orientation.worldDirection(active.pivotNew) !=
+          geometry::oppositeDirection(towardsPivot)) {
+    return Error{"the rolled pair does not face across the lattice after the roll"};
+  }
+  // The new contact latches before the old one lets go: the Catom holds its pivot throughout.
+  mechanics_.setLatched({pivot.id, active.pivotNew, mobileId, active.mobileNew}, true);
+  mechanics_.setLatched({pivot.id, active.pivotOld, mobileId, active.mobileOld}, false);
+  active.switched = true;
+  announce_(&Observer::modulePlaced, now, arrived);
+  for (const uint32_t index : {active.pivot, active.mobile}) motionOf_[index] = -1;
+  active.active = false;
+  --activeCount_;
+  mechanics_.relatch(active.pivot, motionOf_);
+  mechanics_.relatch(active.mobile, motionOf_);
+  announce_(&Observer::motionEnded, now,
+            MotionEnd{mobileId, pivot.id, active.plan.from, active.plan.goal, active.end});
+  Arrival arrival;
+  arrival.mobile = active.mobile;
+  while (!queue_.empty() && (limits_.maxMotions <= 0 || activeCount_ < limits_.maxMotions)) {
+    const Queued next = queue_.front();
+    queue_.pop_front();
+    const MoveResult started = tryStart(next.mobile, next.request);
+    if (!started.ok()) arrival.refused.push_back({next.mobile, started.refusal()});
+  }
+  return arrival;
+}
+
 ActiveMotion MotionExecutor::plan(const motion::Motion& motion, uint32_t mobileIndex,
                                   uint32_t pivotIndex) const {
   // The geometry of the two quarter turns (docs/conventions.md, section 5): the first about -R
@@ -389,6 +553,7 @@ void MotionExecutor::resume(int slot) {
 
 Result<MotionExecutor::Arrival> MotionExecutor::end(int slot) {
   ActiveMotion& active = motions_[slot];
+  if (!active.plan.rule) return endRoll(slot);
   const motion::Rule& rule = *active.plan.rule;
   const ModuleId mobileId = world_.modules()[active.mobile].id;
   const Module& pivot = world_.modules()[active.pivot];

@@ -24,8 +24,10 @@
 #include <span>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
+#include "catom3d/rolling.h"
 #include "datomsim/move_result.h"
 #include "datomsim/result.h"
 #include "geometry/orientation.h"
@@ -69,6 +71,8 @@ struct MotionTimes {
 struct MotionLimits {
   int maxMotions = 0;         // motions in flight at once; 0: no limit
   bool connectivity = false;  // refuse what would cut modules off from their piece
+  // The 3D Catom's rule set, for rolls (motion::Motion::roll).
+  catom3d::RollRules rolling = catom3d::RollRules::kSymmetric;
 };
 
 class MotionExecutor {
@@ -122,6 +126,13 @@ class MotionExecutor {
   // Judges a request on the world as it is now and starts it, or says why not.
   MoveResult tryStart(uint32_t mobileIndex, const motion::Motion& request);
   void begin(uint32_t mobileIndex, const motion::Motion& motion, Claim claim);
+  // A 3D Catom's roll: judged with the Catom's rules, held as its cells say, made in one step.
+  MoveResult tryStartRoll(uint32_t mobileIndex, const motion::Motion& request);
+  void beginRoll(uint32_t mobileIndex, const motion::Motion& motion, Claim claim);
+  Result<Arrival> endRoll(int slot);
+  // The pivot of a request, when it may serve: at rest and held by no motion; else the refusal.
+  std::variant<uint32_t, MoveRefusal> servingPivot(uint32_t mobileIndex,
+                                                   const geometry::Cell& pivotCell);
   // The geometry of the two quarter turns, worked out when the motion starts.
   ActiveMotion plan(const motion::Motion& motion, uint32_t mobileIndex, uint32_t pivotIndex) const;
   MoveRefusal refuse(uint32_t mobileIndex, MoveRefusal refusal) const;
@@ -129,6 +140,7 @@ class MotionExecutor {
 
   world::World& world_;
   motion::RuleOptions rules_;
+  catom3d::RollTable rolls_;
   Mechanics& mechanics_;
   EventQueue& agenda_;
   const Announcer& announce_;

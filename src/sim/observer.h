@@ -69,6 +69,16 @@ struct QuarterTurn {
   bool first = true;  // the first quarter turn (pistons compressing) or the second (releasing)
 };
 
+// A 3D Catom's roll as it starts: the mobile turns by `degrees` about the axis through the centre
+// of pivot, start and goal, perpendicular to their plane (docs/catom3d.md, "In the simulator").
+struct RollTurn {
+  ModuleId mobile;
+  ModuleId pivot;
+  geometry::Cell pivotCell, from, goal;
+  double degrees = 120;
+  Time duration = 0;
+};
+
 // A motion is over: the mobile is at the goal with its new orientation.
 struct MotionEnd {
   ModuleId mobile;
@@ -104,6 +114,7 @@ class Observer {
                                   const std::string& /*text*/) {}
   virtual void motionStarted(Time /*t*/, const MotionStart& /*start*/) {}
   virtual void turnStarted(Time /*t*/, const QuarterTurn& /*turn*/) {}
+  virtual void rollStarted(Time /*t*/, const RollTurn& /*roll*/) {}
   virtual void turnEnded(Time /*t*/, const QuarterTurn& /*turn*/) {}
   // A module takes a cell and an orientation (a mobile arriving).
   virtual void modulePlaced(Time /*t*/, const world::Module& /*module*/) {}

@@ -79,6 +79,7 @@ class Simulator::Context final : public program::ModuleContext {
   Status release() override { return simulator_.release(index_); }
   int compressedPiston() const override { return simulator_.mechanics_.pistons(index_).piston; }
   std::vector<motion::Evaluation> motions() const override {
+    if (simulator_.options_.moduleKind == world::ModuleKind::kCatom3D) return rolls();
     return motion::evaluateAll(simulator_.world_, simulator_.table_, {module().cell, module().id},
                                simulator_.options_.rules);
   }
@@ -101,9 +102,28 @@ class Simulator::Context final : public program::ModuleContext {
 
  private:
   const Module& module() const { return simulator_.world_.modules()[index_]; }
+  std::vector<motion::Evaluation> rolls() const;
   Simulator& simulator_;
   uint32_t index_;
 };
+
+// A 3D Catom's valid rolls, as motions naming their roll (a refused roll has no rule to name in
+// a motion::Refusal: programs see the valid ones; `moves --module catom3d` lists the others).
+std::vector<motion::Evaluation> Simulator::Context::rolls() const {
+  std::vector<motion::Evaluation> out;
+  for (const catom3d::RollMotion& roll :
+       catom3d::validRolls(simulator_.world_, simulator_.rolls_, {module().cell, module().id},
+                           simulator_.options_.rolling)) {
+    motion::Motion motion;
+    motion.roll = roll.roll->index;
+    motion.pivot = roll.pivot;
+    motion.pivotCell = roll.pivotCell;
+    motion.from = roll.from;
+    motion.goal = roll.goal;
+    out.push_back(std::move(motion));
+  }
+  return out;
+}
 
 // The rules this module would judge as the pivot of a mobile imagined at `mobileCell`.
 int Simulator::Context::goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,
@@ -115,6 +135,16 @@ int Simulator::Context::goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>
   const motion::Mobile mobile{mobileCell, simulator_.options_.mobile};
   if (motion::fixedModuleAt(world, mobileCell, mobile)) return 0;
   int count = 0;
+  if (simulator_.options_.moduleKind == world::ModuleKind::kCatom3D) {
+    // A goal reached through either face counts once: 4 goals at most.
+    for (const catom3d::Roll& roll : simulator_.rolls_.rollsForMobileDirection(*direction)) {
+      if (!(wanted & (1u << roll.goalDirection))) continue;
+      const Cell goal = pivot.cell + roll.goalOffset;
+      if (std::find(goals.begin(), goals.begin() + count, goal) != goals.begin() + count) continue;
+      if (catom3d::holds(world, roll, mobile, simulator_.options_.rolling)) goals[count++] = goal;
+    }
+    return count;
+  }
   const motion::Rule* rules = simulator_.table_.rulesForMobileDirection(*direction);
   for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
     if (!(wanted & (1u << rules[i].goalDirection))) continue;
@@ -132,7 +162,7 @@ Simulator::Simulator(world::World world, const motion::RuleTable& table, Simulat
       mechanics_(world_, agenda_, announce_, options.deformationTime),
       motions_(world_, options.rules, mechanics_, agenda_, announce_,
                {options.quarterTurnTime, options.deformationTime},
-               {options.maxMotions, options.connectivity}),
+               {options.maxMotions, options.connectivity, options.rolling}),
       transport_(world_, motions_, agenda_, announce_,
                  {options.messageDelay, options.messageJitter}, options.seed) {
   announce_.subscribe(&statistics_);

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "catom3d/rolling.h"
 #include "datomsim/random.h"
 #include "datomsim/result.h"
 #include "motion/motion.h"
@@ -30,6 +31,7 @@
 #include "sim/observer.h"
 #include "sim/statistics.h"
 #include "sim/transport.h"
+#include "world/module_kind.h"
 #include "world/world.h"
 
 namespace datomsim::sim {
@@ -45,6 +47,10 @@ struct SimulationOptions {
   // One of the two quarter turns of a motion.
   Time quarterTurnTime = 1000 * kMillisecond;
   motion::RuleOptions rules;
+  // What the modules are: Datoms turn by the rules above, 3D Catoms roll by `rolling`
+  // (docs/catom3d.md); a roll takes two quarter turns' time.
+  world::ModuleKind moduleKind = world::ModuleKind::kDatom;
+  catom3d::RollRules rolling = catom3d::RollRules::kSymmetric;
   // Motions in flight at once; requests beyond wait in request order. 0: no limit.
   int maxMotions = 0;
   // Refuse a motion or deformation that would cut modules off from their piece of the ensemble.
@@ -127,6 +133,7 @@ class Simulator {
 
   world::World world_;
   const motion::RuleTable& table_;
+  catom3d::RollTable rolls_;  // a 3D Catom's, when the modules are Catoms
   SimulationOptions options_;
   EventQueue agenda_;
   Announcer announce_;

@@ -96,18 +96,20 @@ function makePages(scratch) {
     view(join(demo, `${name}-trace.jsonl`), '--reach', reach, '-o', file);
     pages.push({ name, file, run: true, overlay: JSON.parse(readFileSync(reach, 'utf8')) });
   }
-  // 3D Catoms: the paper's run with the two-high arch and its scene at rest (the header alone),
-  // the header naming the Catom. A trace is drawn as the modules its header names, whatever moved
-  // them; the run's turns and places move Catoms as they move Datoms.
-  const [runHeader, ...runChanges] = readFileSync(join(demo, 'arch-hole2-trace.jsonl'), 'utf8').trimEnd().split('\n');
-  const datomHeader = JSON.parse(runHeader);
-  const catomHeader = JSON.stringify({ format: 'datomsim-trace', version: 1, module: 'catom3d', ...datomHeader });
-  for (const [name, lines] of [['catom-run', [catomHeader, ...runChanges]], ['catom-scene', [catomHeader]]]) {
-    const trace = join(scratch, `${name}.jsonl`);
-    writeFileSync(trace, lines.join('\n') + '\n');
+  // 3D Catoms: the paper's run with the two-high arch rolled by Catoms (`run --module catom3d`),
+  // and its scene at rest (the run's header alone).
+  const catomScene = join(repository, 'scenes', 'paper-arch-hole2.json');
+  const catomTrace = join(scratch, 'catom-run.jsonl');
+  const catomReach = join(scratch, 'catom-reach.json');
+  run('run', catomScene, '--module', 'catom3d', '--program', 'follow-gradient', '--goal', GOAL.join(','),
+    '--start', START.join(','), '--trace', catomTrace, '--out', join(scratch, 'catom-run.json'));
+  run('reach', catomScene, '--module', 'catom3d', '--goal', GOAL.join(','), '--start', START.join(','), '--out', catomReach);
+  const [catomHeader] = readFileSync(catomTrace, 'utf8').split('\n');
+  writeFileSync(join(scratch, 'catom-scene.jsonl'), catomHeader + '\n');
+  for (const name of ['catom-run', 'catom-scene']) {
     const file = join(scratch, `${name}.html`);
-    view(trace, '--reach', join(scratch, 'arch-hole2-reach.json'), '-o', file);
-    pages.push({ name, file, catoms: { run: lines.length > 1, modules: datomHeader.modules } });
+    view(join(scratch, `${name}.jsonl`), '--reach', catomReach, '-o', file);
+    pages.push({ name, file, catoms: { run: name === 'catom-run', modules: JSON.parse(catomHeader).modules } });
   }
   // The demo's self-reconfiguration: the arch built from a layer of modules on its box.
   const buildFile = join(scratch, 'arch-build.html');

@@ -152,13 +152,42 @@ TEST_F(CommandLine, OptionsOfTheOtherKindAreRefused) {
   EXPECT_EQ(rolling.status, 1);
   EXPECT_NE(rolling.output.find("--rolling is the 3D Catom's"), std::string::npos)
       << rolling.output;
+}
+
+// The paper's two algorithms with rolls: they ask only the motions a module can make.
+TEST_F(CommandLine, ThePapersAlgorithmsRollACatomAsReachSays) {
   const std::string catoms = path("catoms.json");
   ASSERT_EQ(datomsim("convert " + arch(1) + " --module catom3d -o " + catoms).status, 0);
-  const std::string out = path("run.json");
-  const Outcome run = datomsim("run " + catoms + " --program flood --root 1,1,0 --out " + out);
-  EXPECT_EQ(run.status, 1);
-  EXPECT_NE(run.output.find("3D Catoms"), std::string::npos) << run.output;
-  EXPECT_FALSE(std::filesystem::exists(out));
+  const std::string reach = path("reach.json"), gradient = path("gradient.json"),
+                    follow = path("follow.json"), trace = path("follow.jsonl");
+  ASSERT_EQ(datomsim("reach " + catoms + " --goal 6,5,2 --start 0,0,2 --out " + reach).status, 0);
+  const Outcome distributed =
+      datomsim("run " + catoms + " --program gradient --goal 6,5,2 --out " + gradient);
+  ASSERT_EQ(distributed.status, 0) << distributed.output;
+  const Outcome walked =
+      datomsim("run " + catoms + " --program follow-gradient --goal 6,5,2 --start 0,0,2 --out " +
+               follow + " --trace " + trace);
+  ASSERT_EQ(walked.status, 0) << walked.output;
+  const auto reached = nlohmann::json::parse(readText(reach));
+  // The distributed gradient (built forwards, by the modules) equals reach's map (built
+  // backwards): theorem 2 for the symmetric rolls, checked end to end.
+  EXPECT_EQ(distancesOf(nlohmann::json::parse(readText(gradient))), distancesOf(reached));
+  const auto followed = nlohmann::json::parse(readText(follow));
+  EXPECT_TRUE(followed["arrived"].get<bool>());
+  EXPECT_EQ(followed["path"], reached["path"]);
+  EXPECT_EQ(followed["motions"].get<size_t>(), reached["path"].size() - 1);
+  EXPECT_EQ(followed["deformations"], 0);
+  // The trace says Catoms, and each roll is one turn of a third of a turn.
+  const std::string text = readText(trace);
+  EXPECT_NE(text.substr(0, text.find('\n')).find("\"module\":\"catom3d\""), std::string::npos);
+  size_t turns = 0;
+  for (size_t at = text.find("\"turn\""); at != std::string::npos;
+       at = text.find("\"turn\"", at + 1)) {
+    ++turns;
+    EXPECT_NE(text.substr(at, text.find('\n', at) - at).find("\"deg\":120"), std::string::npos);
+  }
+  EXPECT_EQ(turns, followed["motions"].get<size_t>());
+  EXPECT_NE(text.find("rolls about pivot"), std::string::npos);
 }
 
 TEST_F(CommandLine, CompareWritesBothMapsThePictureAndTheCellsOnlyOneKindReaches) {

@@ -36,13 +36,16 @@ for flavour in release sanitize; do
     --trace "$scratch/$flavour-walkers.jsonl" --out "$scratch/$flavour-walkers.json"
   "build/$flavour/bin/datomsim" run scenes/reshape-heap.json --program reconfigure --seed 7 \
     --trace "$scratch/$flavour-heap.jsonl" --out "$scratch/$flavour-heap.json"
+  "build/$flavour/bin/datomsim" run scenes/reshape-heap.json --program reconfigure --seed 7 \
+    --module catom3d --trace "$scratch/$flavour-catoms.jsonl" --out "$scratch/$flavour-catoms.json"
 done
-for run in "" -walkers -heap; do
+for run in "" -walkers -heap -catoms; do
   cmp "$scratch/release$run.jsonl" "$scratch/sanitize$run.jsonl"
   cmp "$scratch/release$run.json" "$scratch/sanitize$run.json"
 done
 echo "traces identical ($(wc -l < "$scratch/release.jsonl"), " \
-  "$(wc -l < "$scratch/release-walkers.jsonl") and $(wc -l < "$scratch/release-heap.jsonl") lines)"
+  "$(wc -l < "$scratch/release-walkers.jsonl"), $(wc -l < "$scratch/release-heap.jsonl") and" \
+  "$(wc -l < "$scratch/release-catoms.jsonl") lines)"
 
 echo "== fuzzing: each reader of user input for 30 s (scripts/fuzz.sh)"
 scripts/fuzz.sh 30

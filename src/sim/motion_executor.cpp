@@ -118,6 +118,17 @@ std::vector<uint32_t> MotionExecutor::cutOff(std::vector<world::BrokenLatch> bro
       [&](uint32_t index) { return modules[index].latches; }, [](uint32_t) { return false; });
 }
 
+std::optional<MoveRefusal> MotionExecutor::splitBy(std::vector<world::BrokenLatch> broken) const {
+  const std::vector<uint32_t> cut = cutOff(std::move(broken));
+  if (cut.empty()) return std::nullopt;
+  MoveRefusal refused;
+  refused.reason = MoveRefusal::Reason::kWouldDisconnect;
+  for (const uint32_t i : cut) refused.cutOff.push_back(world_.modules()[i].id);
+  std::sort(refused.cutOff.begin(), refused.cutOff.end());
+  refused.text = "the ensemble would fall apart: " + motion::describeCutOff(refused.cutOff);
+  return refused;
+}
+
 MoveRefusal MotionExecutor::refuse(uint32_t mobileIndex, MoveRefusal refused) const {
   refused.text = fmt::format("module {}: {}", world_.modules()[mobileIndex].id.value, refused.text);
   announce_(&Observer::motionRefused, agenda_.now(), world_.modules()[mobileIndex].id, refused);
@@ -259,14 +270,7 @@ MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& reques
       const auto more = latchesMovedBy(*world_.indexOf(d.module), d.secondAxis);
       broken.insert(broken.end(), more.begin(), more.end());
     }
-    if (const auto cut = cutOff(std::move(broken)); !cut.empty()) {
-      MoveRefusal refused;
-      refused.reason = MoveRefusal::Reason::kWouldDisconnect;
-      for (const uint32_t i : cut) refused.cutOff.push_back(world_.modules()[i].id);
-      std::sort(refused.cutOff.begin(), refused.cutOff.end());
-      refused.text = "the ensemble would fall apart: " + motion::describeCutOff(refused.cutOff);
-      return refuse(index, std::move(refused));
-    }
+    if (auto split = splitBy(std::move(broken))) return refuse(index, std::move(*split));
   }
   begin(index, motion, std::move(claim));
   return MoveResult::started();
@@ -353,14 +357,7 @@ MoveResult MotionExecutor::tryStartRoll(uint32_t index, const motion::Motion& re
     for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
       if (direction != hinge) world::addBrokenLatch(world_, mobile, direction, broken);
     }
-    if (const auto cut = cutOff(std::move(broken)); !cut.empty()) {
-      MoveRefusal refused;
-      refused.reason = MoveRefusal::Reason::kWouldDisconnect;
-      for (const uint32_t i : cut) refused.cutOff.push_back(world_.modules()[i].id);
-      std::sort(refused.cutOff.begin(), refused.cutOff.end());
-      refused.text = "the ensemble would fall apart: " + motion::describeCutOff(refused.cutOff);
-      return refuse(index, std::move(refused));
-    }
+    if (auto split = splitBy(std::move(broken))) return refuse(index, std::move(*split));
   }
   beginRoll(index, motion, std::move(claim));
   return MoveResult::started();
@@ -414,46 +411,6 @@ void MotionExecutor::beginRoll(uint32_t index, const motion::Motion& motion, Cla
             RollTurn{mobile.id, pivot.id, pivot.cell, motion.from, motion.goal, 120.0,
                      active.until - now});
   agenda_.schedule(active.until, EventKind::kMotionEnd, index, slot);
-}
-
-Result<MotionExecutor::Arrival> MotionExecutor::endRoll(int slot) {
-  ActiveMotion& active = motions_[slot];
-  const ModuleId mobileId = world_.modules()[active.mobile].id;
-  const Module& pivot = world_.modules()[active.pivot];
-  const Time now = agenda_.now();
-  reservations_.release(active.claim, slot);
-  const Status moved = world_.move(mobileId, active.plan.goal);
-  if (!moved.ok()) return Error{"the mobile cannot arrive: " + moved.error()};
-  const Status turned = world_.setOrientation(mobileId, active.end);
-  if (!turned.ok()) return Error{turned.error()};
-  const Module& arrived = world_.modules()[active.mobile];
-  const int towardsPivot = *geometry::directionOfOffset(pivot.cell - arrived.cell);
-  if (arrived.orientation.worldDirection(active.mobileNew) != towardsPivot ||
-      pivot.orientation.worldDirection(active.pivotNew) !=
-          geometry::oppositeDirection(towardsPivot)) {
-    return Error{"the rolled pair does not face across the lattice after the roll"};
-  }
-  // The new contact latches before the old one lets go: the Catom holds its pivot throughout.
-  mechanics_.setLatched({pivot.id, active.pivotNew, mobileId, active.mobileNew}, true);
-  mechanics_.setLatched({pivot.id, active.pivotOld, mobileId, active.mobileOld}, false);
-  active.switched = true;
-  announce_(&Observer::modulePlaced, now, arrived);
-  for (const uint32_t index : {active.pivot, active.mobile}) motionOf_[index] = -1;
-  active.active = false;
-  --activeCount_;
-  mechanics_.relatch(active.pivot, motionOf_);
-  mechanics_.relatch(active.mobile, motionOf_);
-  announce_(&Observer::motionEnded, now,
-            MotionEnd{mobileId, pivot.id, active.plan.from, active.plan.goal, active.end});
-  Arrival arrival;
-  arrival.mobile = active.mobile;
-  while (!queue_.empty() && (limits_.maxMotions <= 0 || activeCount_ < limits_.maxMotions)) {
-    const Queued next = queue_.front();
-    queue_.pop_front();
-    const MoveResult started = tryStart(next.mobile, next.request);
-    if (!started.ok()) arrival.refused.push_back({next.mobile, started.refusal()});
-  }
-  return arrival;
 }
 
 ActiveMotion MotionExecutor::plan(const motion::Motion& motion, uint32_t mobileIndex,
@@ -553,15 +510,17 @@ void MotionExecutor::resume(int slot) {
 
 Result<MotionExecutor::Arrival> MotionExecutor::end(int slot) {
   ActiveMotion& active = motions_[slot];
-  if (!active.plan.rule) return endRoll(slot);
-  const motion::Rule& rule = *active.plan.rule;
+  // A Datom's motion ends its second quarter turn; a Catom's roll is one step.
+  const motion::Rule* rule = active.plan.rule;
   const ModuleId mobileId = world_.modules()[active.mobile].id;
   const Module& pivot = world_.modules()[active.pivot];
   const Time now = agenda_.now();
-  announce_(
-      &Observer::turnEnded, now,
-      QuarterTurn{mobileId, pivot.id, pivot.cell, rule.up, active.goalAxis,
-                  *geometry::crossAxes(rule.up, active.goalAxis), 90.0, times_.quarterTurn, false});
+  if (rule) {
+    announce_(&Observer::turnEnded, now,
+              QuarterTurn{mobileId, pivot.id, pivot.cell, rule->up, active.goalAxis,
+                          *geometry::crossAxes(rule->up, active.goalAxis), 90.0, times_.quarterTurn,
+                          false});
+  }
   // The goal was held for this motion: free it, then take it.
   reservations_.release(active.claim, slot);
   const Status moved = world_.move(mobileId, active.plan.goal);
@@ -576,11 +535,19 @@ Result<MotionExecutor::Arrival> MotionExecutor::end(int slot) {
           geometry::oppositeDirection(towardsPivot)) {
     return Error{"the latched pair does not face across the lattice after the motion"};
   }
+  if (!rule) {
+    // The rolled contact latches before the old one lets go: the Catom holds its pivot
+    // throughout.
+    mechanics_.setLatched({pivot.id, active.pivotNew, mobileId, active.mobileNew}, true);
+    mechanics_.setLatched({pivot.id, active.pivotOld, mobileId, active.mobileOld}, false);
+    active.switched = true;
+  }
   announce_(&Observer::modulePlaced, now, arrived);
 
-  // Pivot and mobile are back at rest; they latch to every neighbour at rest.
+  // Pivot and mobile are back at rest (a Catom has no piston to bring back); they latch to every
+  // neighbour at rest.
   for (const uint32_t index : {active.pivot, active.mobile}) {
-    mechanics_.rest(index);
+    if (rule) mechanics_.rest(index);
     motionOf_[index] = -1;
   }
   active.active = false;

@@ -129,13 +129,14 @@ class MotionExecutor {
   // A 3D Catom's roll: judged with the Catom's rules, held as its cells say, made in one step.
   MoveResult tryStartRoll(uint32_t mobileIndex, const motion::Motion& request);
   void beginRoll(uint32_t mobileIndex, const motion::Motion& motion, Claim claim);
-  Result<Arrival> endRoll(int slot);
   // The pivot of a request, when it may serve: at rest and held by no motion; else the refusal.
   std::variant<uint32_t, MoveRefusal> servingPivot(uint32_t mobileIndex,
                                                    const geometry::Cell& pivotCell);
   // The geometry of the two quarter turns, worked out when the motion starts.
   ActiveMotion plan(const motion::Motion& motion, uint32_t mobileIndex, uint32_t pivotIndex) const;
   MoveRefusal refuse(uint32_t mobileIndex, MoveRefusal refusal) const;
+  // The refusal of a motion whose broken latches would cut modules off, or nullopt.
+  std::optional<MoveRefusal> splitBy(std::vector<world::BrokenLatch> broken) const;
   int freeSlot();
 
   world::World& world_;

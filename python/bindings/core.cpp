@@ -283,17 +283,18 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
     const Scene& scene, const std::string& program, const py::dict& options) {
   app::RunArguments args;
   args.program = program;
-  const std::set<std::string> known = {"goal",         "start",  "rules",    "attachment",
-                                       "connectivity", "seed",   "delay_ms", "jitter_ms",
-                                       "max_motions",  "target", "timeout",  "until",
-                                       "params",       "root",   "trace",    "scene_name"};
+  const std::set<std::string> known = {
+      "goal",     "start",     "rules",       "attachment", "connectivity", "seed",
+      "delay_ms", "jitter_ms", "max_motions", "target",     "timeout",      "until",
+      "params",   "root",      "trace",       "scene_name", "module",       "rolling"};
   for (const auto& [key, value] : options) {
     const std::string name = key.cast<std::string>();
     if (!known.contains(name)) {
       throw UsageError(
           fmt::format("run: unknown option {} (known: goal, start, rules, "
                       "attachment, connectivity, seed, delay_ms, jitter_ms, "
-                      "max_motions, target, timeout, until, params, root, trace)",
+                      "max_motions, target, timeout, until, params, root, trace, module, "
+                      "rolling)",
                       name));
     }
     if (value.is_none()) continue;
@@ -318,6 +319,8 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
     if (name == "timeout") args.timeoutS = value.cast<double>();
     if (name == "until") args.untilS = value.cast<double>();
     if (name == "trace") args.wantTrace = value.cast<bool>();
+    if (name == "module") args.module = value.cast<std::string>();
+    if (name == "rolling") args.rolling = value.cast<std::string>();
     if (name == "params") {
       for (const auto& [k, v] : value.cast<py::dict>()) {
         args.parameters.push_back(py::str(k).cast<std::string>() + "=" +

@@ -103,6 +103,11 @@ def test_a_3d_catom_rolls_as_the_command_line_rolls_it(scenes, cli, tmp_path):
         scene.module = "sphere"
     with pytest.raises(datomsim.Error, match="--rolling: exact not in"):
         datomsim.reach(scene, goal=(6, 5, 2), rolling="exact")
+    # And it runs with rolls: the paper's Algorithm 1 follows reach's path.
+    walked = datomsim.run(scene, "follow-gradient", goal=(6, 5, 2), start=(0, 0, 2))
+    assert walked["arrived"] and walked["path"] == rolled.path.tolist()
+    assert datomsim.run(datomsim.load_scene(path), "follow-gradient", goal=(6, 5, 2),
+                        start=(0, 0, 2), module="catom3d")["path"] == walked["path"]
 
 
 @pytest.mark.parametrize(

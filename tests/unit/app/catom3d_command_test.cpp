@@ -148,6 +148,13 @@ TEST_F(CommandLine, OptionsOfTheOtherKindAreRefused) {
       datomsim("reach " + arch(1) + " --module catom3d --goal 6,5,2 --rules strict");
   EXPECT_EQ(rules.status, 1);
   EXPECT_NE(rules.output.find("--rules is a Datom rule option"), std::string::npos) << rules.output;
+  const Outcome run = datomsim("run " + arch(1) +
+                               " --module catom3d --program flood --root 1,1,0 --attachment off");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.output.find("--attachment is a Datom rule option"), std::string::npos)
+      << run.output;
+  EXPECT_EQ(datomsim("run " + arch(1) + " --program flood --root 1,1,0 --rolling symmetric").status,
+            1);
   const Outcome rolling = datomsim("moves " + arch(1) + " --at 0,0,2 --rolling visiblesim");
   EXPECT_EQ(rolling.status, 1);
   EXPECT_NE(rolling.output.find("--rolling is the 3D Catom's"), std::string::npos)

@@ -103,24 +103,34 @@ void ModuleArguments::addTo(CLI::App& command) {
       ->capture_default_str();
 }
 
-MotionModel ModuleArguments::modelFor(const io::Scene& scene, const RuleArguments& rules) const {
-  MotionModel model;
-  model.kind = module.empty() ? scene.moduleKind : *world::moduleKindNamed(module);
-  model.datom = rules.options();
-  model.rolling = *catom3d::rollRulesNamed(rolling);
-  const auto given = [&](const char* option) { return command_ && command_->count(option) > 0; };
-  if (model.kind == world::ModuleKind::kCatom3D) {
-    for (const char* option : {"--rules", "--attachment", "--connectivity"}) {
-      if (given(option)) {
+world::ModuleKind kindFor(const std::string& module, const io::Scene& scene) {
+  return module.empty() ? scene.moduleKind : *world::moduleKindNamed(module);
+}
+
+void refuseOtherKindsOptions(const CLI::App& command, world::ModuleKind kind,
+                             std::initializer_list<const char*> datomOptions) {
+  if (kind == world::ModuleKind::kCatom3D) {
+    for (const char* option : datomOptions) {
+      if (command.count(option) > 0) {
         throw UsageError(fmt::format(
             "{} is a Datom rule option; the modules here are 3D Catoms, whose rolls take "
             "--rolling (or say --module datom)",
             option));
       }
     }
-  } else if (given("--rolling")) {
+  } else if (command.count("--rolling") > 0) {
     throw UsageError(
         "--rolling is the 3D Catom's; the modules here are Datoms (say --module catom3d)");
+  }
+}
+
+MotionModel ModuleArguments::modelFor(const io::Scene& scene, const RuleArguments& rules) const {
+  MotionModel model;
+  model.kind = kindFor(module, scene);
+  model.datom = rules.options();
+  model.rolling = *catom3d::rollRulesNamed(rolling);
+  if (command_) {
+    refuseOtherKindsOptions(*command_, model.kind, {"--rules", "--attachment", "--connectivity"});
   }
   return model;
 }

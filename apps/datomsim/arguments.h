@@ -1,6 +1,7 @@
 // Parsing the command line's values: cells "x,y,z", option names, and the errors that name them.
 #pragma once
 
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -73,6 +74,14 @@ struct MotionModel {
 // "datom, rules paper, attachment on" or "catom3d, symmetric rolls": what pictures and
 // reports name.
 std::string describe(const MotionModel& model);
+
+// The kind --module names, or the scene's when it names none (the name checked by the option).
+world::ModuleKind kindFor(const std::string& module, const io::Scene& scene);
+
+// Refuses the options of the kind the modules are not: those of `datomOptions` the command was
+// given, for Catoms; --rolling, for Datoms.
+void refuseOtherKindsOptions(const CLI::App& command, world::ModuleKind kind,
+                             std::initializer_list<const char*> datomOptions);
 
 // --module and --rolling, beside the RuleArguments: the module is the scene file's unless
 // --module names one. The Datom's rule options and --rolling each apply to one kind only: given

@@ -199,20 +199,11 @@ void addVerify(CLI::App& app) {
   addExample(*command, "verify scenes/paper-arch-hole1.json");
   command->callback([args, command] {
     const io::Scene scene = unwrap(io::readScene(args->scene));
-    const world::ModuleKind kind =
-        args->module.empty() ? scene.moduleKind : *world::moduleKindNamed(args->module);
+    const world::ModuleKind kind = kindFor(args->module, scene);
+    refuseOtherKindsOptions(*command, kind, {"--rules", "--attachment"});
     if (kind == world::ModuleKind::kCatom3D) {
-      if (command->count("--rules") || command->count("--attachment")) {
-        throw UsageError(
-            "--rules and --attachment are Datom rule options; the modules here are 3D Catoms "
-            "(their rule sets: --rolling)");
-      }
       verifyRolls(scene.world, args->rolling);
       return;
-    }
-    if (command->count("--rolling")) {
-      throw UsageError(
-          "--rolling is the 3D Catom's; the modules here are Datoms (say --module catom3d)");
     }
     const motion::RuleTable table;
     size_t failures = 0;

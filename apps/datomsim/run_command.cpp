@@ -209,21 +209,8 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
     refuseClashes({{"scene", args->scene}, {"--target", args->target}}, outputs);
     args->connectivityGiven = command->count("--connectivity") > 0;
     io::Scene scene = unwrap(io::readScene(args->scene));
-    // Each kind's own options, as reach refuses them (--connectivity serves both).
-    const bool catoms = args->module.empty() ? scene.moduleKind == world::ModuleKind::kCatom3D
-                                             : args->module == "catom3d";
-    for (const char* option : {"--rules", "--attachment"}) {
-      if (catoms && command->count(option) > 0) {
-        throw UsageError(fmt::format(
-            "{} is a Datom rule option; the modules here are 3D Catoms, whose rolls take "
-            "--rolling (or say --module datom)",
-            option));
-      }
-    }
-    if (!catoms && command->count("--rolling") > 0) {
-      throw UsageError(
-          "--rolling is the 3D Catom's; the modules here are Datoms (say --module catom3d)");
-    }
+    // Each kind's own options, as reach refuses them (--connectivity serves both in a run).
+    refuseOtherKindsOptions(*command, kindFor(args->module, scene), {"--rules", "--attachment"});
     const RunOutput run = runOnScene(std::move(scene), args->scene, *args, added);
     // A failed run is written like a successful one, to be looked at and counted; then it fails.
     if (!args->trace.empty()) writeOutput(args->trace, run.result.trace);

@@ -1,5 +1,7 @@
 #include "json_stream.h"
 
+#include <array>
+#include <charconv>
 #include <cmath>
 
 namespace datomsim::app {
@@ -10,12 +12,37 @@ void JsonObjectStream::field(std::string_view key, const nlohmann::ordered_json&
   flush();
 }
 
+namespace {
+
+// The longest "[x,y,z,value]," a cell list writes with an integer value: four 20-character
+// numbers and their punctuation.
+constexpr size_t kLongestCell = 4 * 20 + 8;
+
+char* writeInteger(char* at, int64_t value) {
+  return std::to_chars(at, at + 20, value).ptr;
+}
+
+// ",[x,y,z" (no comma before the first of a list) into `at`.
+char* writeCellStart(char* at, const geometry::Cell& cell, bool first) {
+  if (!first) *at++ = ',';
+  *at++ = '[';
+  at = writeInteger(at, cell.x);
+  *at++ = ',';
+  at = writeInteger(at, cell.y);
+  *at++ = ',';
+  return writeInteger(at, cell.z);
+}
+
+}  // namespace
+
 void JsonObjectStream::cells(std::string_view key, const std::vector<geometry::Cell>& list) {
   open(key);
   buffer_.push_back('[');
   for (size_t i = 0; i < list.size(); ++i) {
-    cellStart(list[i], i == 0);
-    buffer_.push_back(']');
+    std::array<char, kLongestCell> text;
+    char* at = writeCellStart(text.data(), list[i], i == 0);
+    *at++ = ']';
+    buffer_.append(text.data(), at);
     flushIfFull();
   }
   buffer_.push_back(']');
@@ -27,10 +54,12 @@ void JsonObjectStream::cellValues(std::string_view key,
   open(key);
   buffer_.push_back('[');
   for (size_t i = 0; i < list.size(); ++i) {
-    cellStart(list[i].first, i == 0);
-    buffer_.push_back(',');
-    integer(list[i].second);
-    buffer_.push_back(']');
+    std::array<char, kLongestCell> text;
+    char* at = writeCellStart(text.data(), list[i].first, i == 0);
+    *at++ = ',';
+    at = writeInteger(at, list[i].second);
+    *at++ = ']';
+    buffer_.append(text.data(), at);
     flushIfFull();
   }
   buffer_.push_back(']');
@@ -50,11 +79,19 @@ void JsonObjectStream::cellValues(std::string_view key,
   buffer_.push_back('[');
   bool first = true;
   source([&](const geometry::Cell& cell, double value) {
-    cellStart(cell, first);
+    std::array<char, kLongestCell> text;
+    char* at = writeCellStart(text.data(), cell, first);
     first = false;
-    buffer_.push_back(',');
-    number(value);
-    buffer_.push_back(']');
+    *at++ = ',';
+    if (isWhole(value)) {
+      at = writeInteger(at, int64_t(value));
+      *at++ = ']';
+      buffer_.append(text.data(), at);
+    } else {
+      buffer_.append(text.data(), at);
+      buffer_.append(nlohmann::ordered_json(value).dump());
+      buffer_.push_back(']');
+    }
     flushIfFull();
   });
   buffer_.push_back(']');
@@ -73,21 +110,9 @@ void JsonObjectStream::open(std::string_view key) {
   buffer_.push_back(':');
 }
 
-void JsonObjectStream::cellStart(const geometry::Cell& cell, bool first) {
-  buffer_.append(std::string_view(first ? "[" : ",["));
-  integer(cell.x);
-  buffer_.push_back(',');
-  integer(cell.y);
-  buffer_.push_back(',');
-  integer(cell.z);
-}
-
-void JsonObjectStream::number(double value) {
-  if (value == double(int64_t(value)) && std::abs(value) < 9e15) {
-    integer(int64_t(value));
-  } else {
-    buffer_.append(nlohmann::ordered_json(value).dump());
-  }
+bool JsonObjectStream::isWhole(double value) {
+  // The magnitude first: a cast of a value beyond int64_t is undefined.
+  return std::abs(value) < 9e15 && value == double(int64_t(value));
 }
 
 void JsonObjectStream::flush() {

@@ -38,13 +38,8 @@ class JsonObjectStream {
 
  private:
   void open(std::string_view key);
-  void integer(int64_t value) {
-    const fmt::format_int text(value);
-    buffer_.append(text.data(), text.data() + text.size());
-  }
-  // "[x,y,z" with a comma before it unless it is the first of its list.
-  void cellStart(const geometry::Cell& cell, bool first);
-  void number(double value);
+  // Whether a value prints as an integer; others print as nlohmann prints them.
+  static bool isWhole(double value);
   void flushIfFull() {
     if (buffer_.size() >= size_t{1} << 16) flush();
   }

@@ -49,25 +49,27 @@ class TypedPrograms final : public ProgramSet {
       // Each cell once, from the first module around it (in direction order from the cell) that
       // stores a distance for it, with the smallest that any of them stores: no table of every
       // module's copies, which would hold each cell about four times.
-      const auto storedFor = [&](const geometry::Cell& cell, int directionFromCell) {
-        const auto slot = modules.slotAt(cell + geometry::neighbourOffset(directionFromCell));
-        if (!slot || ids_[*slot] == parameters_.mobile) return GradientProgram::kUnknown;
-        return programs_[*slot].distanceTowards(geometry::oppositeDirection(directionFromCell));
-      };
+      ModulesAtEnd::Slots slots;
       for (uint32_t slot = 0; slot < programs_.size(); ++slot) {
         if (ids_[slot] == parameters_.mobile) continue;
         const geometry::Cell self = modules.cellOf(slot);
         for (int d = 0; d < geometry::kDirectionCount; ++d) {
-          if (programs_[slot].distanceTowards(d) == GradientProgram::kUnknown) continue;
+          const int32_t mine = programs_[slot].distanceTowards(d);
+          if (mine == GradientProgram::kUnknown) continue;
           const geometry::Cell cell = self + geometry::neighbourOffset(d);
           const int towardsSelf = geometry::oppositeDirection(d);
-          const uint16_t around = modules.neighboursOf(cell);
+          const uint16_t around = modules.around(cell, slots);
           int smallest = GradientProgram::kUnknown;
           bool first = true;
           for (int e = 0; e < geometry::kDirectionCount; ++e) {
             if (!(around & (1u << e))) continue;
-            const int stored =
-                e == towardsSelf ? programs_[slot].distanceTowards(d) : storedFor(cell, e);
+            int32_t stored = mine;
+            if (e != towardsSelf) {
+              const uint32_t other = slots[size_t(e)];
+              stored = ids_[other] == parameters_.mobile
+                           ? GradientProgram::kUnknown
+                           : programs_[other].distanceTowards(geometry::oppositeDirection(e));
+            }
             if (stored == GradientProgram::kUnknown) continue;
             if (smallest == GradientProgram::kUnknown && e != towardsSelf) {
               first = false;

@@ -2,6 +2,7 @@
 // and how the driver reads their results after the run through the programs' own types.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -17,6 +18,7 @@
 #include "datomsim/program.h"
 #include "datomsim/result.h"
 #include "geometry/cell.h"
+#include "geometry/lattice.h"
 #include "program/module_program.h"
 
 namespace datomsim::algorithms {
@@ -75,10 +77,11 @@ struct MobileOutcome {
 struct ModulesAtEnd {
   size_t count = 0;
   std::function<geometry::Cell(uint32_t slot)> cellOf;
-  // The slot of the module in a cell, if one is there.
-  std::function<std::optional<uint32_t>(const geometry::Cell&)> slotAt;
-  // Bit d set: a module is in the neighbour of a cell in world direction d.
-  std::function<uint16_t(const geometry::Cell&)> neighboursOf;
+  // The slots of the modules around a cell by world direction (kNoSlot where none), and their
+  // mask (bit d set: a module in direction d): the twelve found together.
+  static constexpr uint32_t kNoSlot = UINT32_MAX;
+  using Slots = std::array<uint32_t, geometry::kDirectionCount>;
+  std::function<uint16_t(const geometry::Cell&, Slots&)> around;
 };
 
 // A module of the reconfigure program that has not settled, and what it was doing.

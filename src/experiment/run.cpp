@@ -73,12 +73,10 @@ algorithms::ModulesAtEnd modulesAtEnd(const world::World& world) {
   algorithms::ModulesAtEnd modules;
   modules.count = world.size();
   modules.cellOf = [&world](uint32_t slot) { return world.modules()[slot].cell; };
-  modules.slotAt = [&world](const Cell& cell) -> std::optional<uint32_t> {
-    const world::Module* module = world.moduleAt(cell);
-    if (!module) return std::nullopt;
-    return uint32_t(module - world.modules().data());
+  static_assert(algorithms::ModulesAtEnd::kNoSlot == world::World::kNoModule);
+  modules.around = [&world](const Cell& cell, algorithms::ModulesAtEnd::Slots& slots) {
+    return world.neighbourIndices(cell, slots);
   };
-  modules.neighboursOf = [&world](const Cell& cell) { return world.neighbourMask(cell); };
   return modules;
 }
 
@@ -293,12 +291,28 @@ void RunReports::forEach(std::string_view key,
     std::optional<double> found;
   } one;
   one.key = key;
-  world_.forEachInCellOrder([&](uint32_t slot) {
+  // Cell order is no order in memory: a program is read kAhead cells after the first hint and
+  // kNear after the second (ProgramSource::prefetch), so that its cache misses overlap with the
+  // reading of the programs before it.
+  constexpr size_t kAhead = 16, kNear = 8;
+  std::array<std::pair<uint32_t, Cell>, kAhead> waiting;
+  size_t taken = 0, given = 0;
+  const auto readOne = [&] {
+    const auto& [slot, cell] = waiting[taken++ % kAhead];
     one.found.reset();
     programs_->report(slot, one);
-    if (one.found) each(world_.modules()[slot].cell, *one.found);
+    if (one.found) each(cell, *one.found);
+  };
+  world_.forEachInCellOrder([&](uint32_t slot, const Cell& cell) {
+    if (given - taken == kAhead) readOne();
+    programs_->prefetch(slot, false);
+    waiting[given++ % kAhead] = {slot, cell};
+    if (given - taken > kNear)
+      programs_->prefetch(waiting[(given - kNear - 1) % kAhead].first, true);
   });
+  while (taken < given) readOne();
 }
+
 std::vector<std::pair<Cell, double>> RunReports::values(std::string_view key) const {
   std::vector<std::pair<Cell, double>> out;
   forEach(key, [&](const Cell& cell, double value) { out.push_back({cell, value}); });

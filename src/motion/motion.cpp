@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -374,6 +375,65 @@ bool holds(const World& world, const Rule& rule, const Mobile& mobile, const Rul
     if (!world.isLatched(*self, geometry::oppositeDirection(rule.mobileDirection))) return false;
   }
   return check(world, rule, mobile.cell - rule.mobileOffset, mobile, options, nullptr, nullptr);
+}
+
+Surroundings surroundingsOf(const World& world, const RuleTable& table, const Cell& pivotCell,
+                            const Mobile& mobile) {
+  Surroundings around;
+  around.pivotCell = pivotCell;
+  if (mobile.module) {
+    // The mobile's module is not part of the fixed world wherever it is.
+    if (const Module* self = world.find(*mobile.module)) {
+      if (const int bit = table.bitOf(self->cell - pivotCell); bit >= 0) {
+        around.mobileCell = uint64_t{1} << bit;
+      }
+      if (self->cell == mobile.cell) around.realMobile = self;
+    }
+  }
+  return around;
+}
+
+void lookAt(const World& world, const RuleTable& table, Surroundings& around, uint64_t cells) {
+  const uint64_t wanted = cells & ~around.seen;
+  if (!wanted) return;
+  around.seen |= wanted;
+  const Cell& pivotCell = around.pivotCell;
+  const std::span<const Cell> neighbourhood = table.neighbourhood();
+  around.occupied |= world.occupiedAt(pivotCell, neighbourhood, wanted) & ~around.mobileCell;
+  // Solid cells: below the ground alone, unless the pivot is near a grid's side or the edge of
+  // the coordinate range; then cell by cell.
+  const world::Bounds& bounds = world.bounds();
+  constexpr int32_t kReach = RuleTable::kReach;
+  const bool farFromLimits =
+      world::inCoordinateRange({pivotCell.x - kReach - 1, pivotCell.y - kReach - 1, 0}) &&
+      world::inCoordinateRange(
+          {pivotCell.x + kReach + 1, pivotCell.y + kReach + 1, pivotCell.z + kReach});
+  if (!bounds.gridSize && farFromLimits && pivotCell.z >= 0) {
+    if (pivotCell.z < kReach) around.solid |= table.below(pivotCell.z + 1) & wanted;
+  } else {
+    for (uint64_t bits = wanted; bits; bits &= bits - 1) {
+      const int i = std::countr_zero(bits);
+      if (!bounds.contains(pivotCell + neighbourhood[size_t(i)])) {
+        around.solid |= uint64_t{1} << i;
+      }
+    }
+  }
+}
+
+bool holds(const World& world, const Rule& rule, const Mobile& mobile, const RuleOptions& options,
+           const Surroundings& around) {
+  if (around.realMobile &&
+      !world.isLatched(*around.realMobile, geometry::oppositeDirection(rule.mobileDirection))) {
+    return false;
+  }
+  const RuleMasks& masks = rule.masks;
+  if (!mayHold(rule, around)) return false;
+  if (options.rules == RuleSet::kStrict && (around.occupied & masks.doubleDeformation)) {
+    return false;
+  }
+  // No module to deform and nothing to cut off: nothing else can refuse it.
+  if (!(around.occupied & masks.deforming) && !options.connectivity) return true;
+  return check(world, rule, around.pivotCell, mobile, options, nullptr, nullptr);
 }
 
 std::vector<Evaluation> evaluateAll(const World& world, const RuleTable& table,

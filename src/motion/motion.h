@@ -52,6 +52,36 @@ Evaluation evaluate(const world::World& world, const Rule& rule, const Mobile& m
 bool holds(const world::World& world, const Rule& rule, const Mobile& mobile,
            const RuleOptions& options);
 
+// What the rules of one pivot see around it, cell by cell of RuleTable::neighbourhood() (bit i for
+// the i-th): the cells outside the world, and those holding a fixed module (the mobile is none).
+// Cells are looked at on demand (lookAt), once for all the rules of the pivot being judged, so
+// that each rule is judged with a few ANDs: first the cells rules keep empty, which refuse most
+// of them, then the other cells of the rules still standing.
+struct Surroundings {
+  geometry::Cell pivotCell;
+  uint64_t seen = 0;                          // the cells looked at
+  uint64_t solid = 0;                         // of those, the ones outside the world
+  uint64_t occupied = 0;                      // and the ones holding a fixed module
+  const world::Module* realMobile = nullptr;  // the mobile's module, when it is at mobile.cell
+  uint64_t mobileCell = 0;                    // the bit of the cell of the mobile's module, if any
+};
+
+// The surroundings of the pivot at `pivotCell`, no cell looked at yet.
+Surroundings surroundingsOf(const world::World& world, const RuleTable& table,
+                            const geometry::Cell& pivotCell, const Mobile& mobile);
+// Looks at the cells of `cells` not seen yet.
+void lookAt(const world::World& world, const RuleTable& table, Surroundings& around,
+            uint64_t cells);
+// Whether the cells seen so far leave the rule possible.
+inline bool mayHold(const Rule& rule, const Surroundings& around) {
+  return !(around.solid & rule.masks.cells) && !(around.occupied & rule.masks.mustBeEmpty);
+}
+
+// holds() on surroundings in which the rule's cells have been seen: the same answer, most
+// refusals found by the rule's masks alone.
+bool holds(const world::World& world, const Rule& rule, const Mobile& mobile,
+           const RuleOptions& options, const Surroundings& around);
+
 // Every rule of every pivot around the mobile (up to 72), in table order.
 std::vector<Evaluation> evaluateAll(const world::World& world, const RuleTable& table,
                                     const Mobile& mobile, const RuleOptions& options);

@@ -1,6 +1,7 @@
 #include "motion/rule_table.h"
 
 #include <cassert>
+#include <cstdlib>
 
 #include "geometry/lattice.h"
 
@@ -119,6 +120,34 @@ RuleTable::RuleTable() {
         rule.goalOffset = rule.cells[0].offset;
         // The goal is a neighbour of the pivot (a quarter turn about it ends next to it).
         rule.goalDirection = *geometry::directionOfOffset(rule.goalOffset);
+      }
+    }
+  }
+  // The neighbourhood, in the order the rules name its cells, and each rule's masks over it.
+  bitByOffset_.fill(-1);
+  for (Rule& rule : rules_) {
+    for (int i = 0; i < rule.cellCount; ++i) {
+      const RuleCell& need = rule.cells[i];
+      int bit = bitOf(need.offset);
+      if (bit < 0) {
+        assert(neighbourhoodSize_ < kMaxNeighbourhood);
+        bit = neighbourhoodSize_++;
+        neighbourhood_[size_t(bit)] = need.offset;
+        assert(std::abs(need.offset.x) <= kReach && std::abs(need.offset.y) <= kReach &&
+               std::abs(need.offset.z) <= kReach);
+        bitByOffset_[size_t(((need.offset.z + kReach) * kSide + need.offset.y + kReach) * kSide +
+                            need.offset.x + kReach)] = int8_t(bit);
+        for (const int depth : {1, 2}) {
+          if (need.offset.z <= -depth) below_[size_t(depth - 1)] |= uint64_t{1} << bit;
+        }
+      }
+      const uint64_t mask = uint64_t{1} << bit;
+      rule.masks.cells |= mask;
+      if (need.mustBeEmpty()) {
+        rule.masks.mustBeEmpty |= mask;
+      } else {
+        rule.masks.deforming |= mask;
+        if (need.isDoubleDeformation()) rule.masks.doubleDeformation |= mask;
       }
     }
   }

@@ -12,6 +12,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <span>
 #include <string_view>
 
 #include "geometry/cell.h"
@@ -40,6 +42,16 @@ struct RuleCell {
   bool isDoubleDeformation() const { return secondAxis >= 0; }
 };
 
+// What a rule needs of the cells around its pivot, as sets of RuleTable::neighbourhood()'s cells
+// (bit i for the i-th): judging a rule on what a pivot sees around it (motion::Surroundings) is
+// then a few ANDs, and only a rule whose cells to deform hold modules needs a closer look.
+struct RuleMasks {
+  uint64_t cells = 0;              // every cell the rule looks at: none may be solid
+  uint64_t mustBeEmpty = 0;        // the goal and the cells that must be empty
+  uint64_t doubleDeformation = 0;  // def(X, Y) cells: empty under strict rules
+  uint64_t deforming = 0;          // def cells: a module there must compress a piston
+};
+
 struct Rule {
   int index;            // 0..71, stable: direction * 6 + (axis slot) * 3 + turn
   int mobileDirection;  // world direction from the pivot to the mobile, 0..11
@@ -53,6 +65,7 @@ struct Rule {
   // The cells to check, goal first and K second so that most failures are found early.
   std::array<RuleCell, 8> cells;
   int cellCount;
+  RuleMasks masks;
 };
 
 // The 72 rules, built once; pass it by const reference.
@@ -71,8 +84,32 @@ class RuleTable {
     return &rules_[direction * kRulesPerNeighbour];
   }
 
+  // Every cell some rule looks at, as offsets from the pivot (42 of them), in the order of the
+  // bits of RuleMasks.
+  static constexpr int kMaxNeighbourhood = 64;
+  // No rule looks further than this many cells from the pivot along any coordinate.
+  static constexpr int32_t kReach = 2;
+  std::span<const geometry::Cell> neighbourhood() const {
+    return {neighbourhood_.data(), size_t(neighbourhoodSize_)};
+  }
+  // The bit of an offset from the pivot in the neighbourhood, or -1 when no rule looks there.
+  int bitOf(const geometry::Cell& offset) const {
+    const auto within = [](int32_t v) { return v >= -kReach && v <= kReach; };
+    if (!within(offset.x) || !within(offset.y) || !within(offset.z)) return -1;
+    return bitByOffset_[size_t(((offset.z + kReach) * kSide + offset.y + kReach) * kSide +
+                               offset.x + kReach)];
+  }
+  // The cells of the neighbourhood at least `depth` (1 or 2) layers below the pivot.
+  uint64_t below(int depth) const { return below_[size_t(depth - 1)]; }
+
  private:
   std::array<Rule, kRuleCount> rules_;
+  std::array<geometry::Cell, kMaxNeighbourhood> neighbourhood_{};
+  int neighbourhoodSize_ = 0;
+  std::array<uint64_t, 2> below_{};
+  // bitOf is one lookup in a table of the cube of side kSide around the pivot.
+  static constexpr int32_t kSide = 2 * kReach + 1;
+  std::array<int8_t, kSide * kSide * kSide> bitByOffset_;
 };
 
 }  // namespace datomsim::motion

@@ -58,9 +58,7 @@ std::optional<std::string> checkMotion(const world::World& world, const Mechanic
 std::optional<std::string> findViolation(const world::World& world, const Mechanics& mechanics,
                                          const MotionExecutor& motions,
                                          std::span<const uint32_t> placed) {
-  if (mechanics.touched().empty() && mechanics.broken().empty() && placed.empty()) {
-    return std::nullopt;
-  }
+  if (!mayViolate(mechanics, placed)) return std::nullopt;
   // Only the modules this event touched can have changed their pistons.
   for (const uint32_t index : mechanics.touched()) {
     if (std::popcount(mechanics.pistons(index).compressedMask) > 1) {

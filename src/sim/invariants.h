@@ -23,6 +23,12 @@
 
 namespace datomsim::sim {
 
+// Whether an event can have broken an invariant: it changed a piston, broke a latch or placed a
+// module. Most events (messages, timers) do none of these; the run loop asks this first, inline.
+inline bool mayViolate(const Mechanics& mechanics, std::span<const uint32_t> placed) {
+  return !mechanics.touched().empty() || !mechanics.broken().empty() || !placed.empty();
+}
+
 // `placed`: the modules that took a new cell in this event.
 std::optional<std::string> findViolation(const world::World& world, const Mechanics& mechanics,
                                          const MotionExecutor& motions,

@@ -125,20 +125,37 @@ class Observer {
 };
 
 // The subscribers of one simulation; what its parts announce through.
+//
+// Three announcements come with every event and every message (eventStarted, messageSent,
+// messageReceived): tens of millions in a large run. Making one reads the modules' ids, which is
+// a cache miss each, so the parts make them only when a subscriber hears them (hearsEvents()).
 class Announcer {
  public:
   void subscribe(Observer* observer) { observers_.push_back(observer); }
+  // A subscriber that hears every announcement but the three of every event and message, which
+  // its owner tells it directly: the run's statistics, which count events and messages by kind
+  // without a module's id.
+  void subscribeToChanges(Observer* observer) { changeWatchers_.push_back(observer); }
   // A subscriber that hears only latchChanged: it costs nothing to the announcements of every
   // event and message (the simulator's own, which tells programs of their latches).
   void subscribeToLatches(Observer* observer) { latchWatchers_.push_back(observer); }
 
-  // Calls one method of every subscriber, in the order they subscribed.
+  // Whether anyone hears eventStarted, messageSent and messageReceived; when not, they are not
+  // made.
+  bool hearsEvents() const { return !observers_.empty(); }
+
+  // Calls one method of every subscriber that hears it, in the order they subscribed.
   template <typename... Parameters, typename... Arguments>
   void operator()(void (Observer::*method)(Parameters...), Arguments&&... arguments) const {
     for (Observer* observer : observers_) (observer->*method)(arguments...);
-    // Only latchChanged has this signature: the others' announcements skip the watchers at no
-    // cost, decided when compiled.
-    if constexpr (std::is_same_v<void (Observer::*)(Parameters...), LatchMethod>) {
+    // Which watchers hear a method is decided by its signature, when compiled: the three of every
+    // event and message have signatures of their own, and so has latchChanged.
+    using Method = void (Observer::*)(Parameters...);
+    if constexpr (!std::is_same_v<Method, EventMethod> && !std::is_same_v<Method, SentMethod> &&
+                  !std::is_same_v<Method, ReceivedMethod>) {
+      for (Observer* observer : changeWatchers_) (observer->*method)(arguments...);
+    }
+    if constexpr (std::is_same_v<Method, LatchMethod>) {
       if (method == &Observer::latchChanged) {
         for (Observer* observer : latchWatchers_) (observer->*method)(arguments...);
       }
@@ -147,7 +164,11 @@ class Announcer {
 
  private:
   using LatchMethod = void (Observer::*)(Time, const world::LatchPair&, bool);
+  using EventMethod = void (Observer::*)(Time, EventKind, ModuleId);
+  using SentMethod = void (Observer::*)(Time, ModuleId, ModuleId, const Message&, Time);
+  using ReceivedMethod = void (Observer::*)(Time, ModuleId, int, const Message&);
   std::vector<Observer*> observers_;
+  std::vector<Observer*> changeWatchers_;
   std::vector<Observer*> latchWatchers_;
 };
 

@@ -145,10 +145,29 @@ int Simulator::Context::goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>
     }
     return count;
   }
-  const motion::Rule* rules = simulator_.table_.rulesForMobileDirection(*direction);
+  // The cells the wanted rules keep empty are looked at first, once for all of them; then the
+  // other cells of the rules they leave standing; then each rule is judged on what was seen.
+  const motion::RuleTable& table = simulator_.table_;
+  const motion::Rule* rules = table.rulesForMobileDirection(*direction);
+  uint64_t keptEmpty = 0;
   for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
+    if (wanted & (1u << rules[i].goalDirection)) keptEmpty |= rules[i].masks.mustBeEmpty;
+  }
+  if (!keptEmpty) return 0;
+  motion::Surroundings around = motion::surroundingsOf(world, table, pivot.cell, mobile);
+  motion::lookAt(world, table, around, keptEmpty);
+  uint64_t standing = 0;
+  for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
+    if ((wanted & (1u << rules[i].goalDirection)) && motion::mayHold(rules[i], around)) {
+      standing |= rules[i].masks.cells;
+    }
+  }
+  if (!standing) return 0;
+  motion::lookAt(world, table, around, standing);
+  for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
+    // A rule refused by the cells it keeps empty stays refused by them: holds() sees it.
     if (!(wanted & (1u << rules[i].goalDirection))) continue;
-    if (motion::holds(world, rules[i], mobile, simulator_.options_.rules)) {
+    if (motion::holds(world, rules[i], mobile, simulator_.options_.rules, around)) {
       goals[count++] = pivot.cell + rules[i].goalOffset;
     }
   }
@@ -165,7 +184,7 @@ Simulator::Simulator(world::World world, const motion::RuleTable& table, Simulat
                {options.maxMotions, options.connectivity, options.rolling}),
       transport_(world_, motions_, agenda_, announce_,
                  {options.messageDelay, options.messageJitter}, options.seed) {
-  announce_.subscribe(&statistics_);
+  announce_.subscribeToChanges(&statistics_);
   announce_.subscribeToLatches(&latchChanges_);
 }
 
@@ -271,10 +290,13 @@ Status Simulator::run(Time until) {
     current_ = &event;
     mechanics_.clearEvent();
     placed_.clear();
-    announce_(&Observer::eventStarted, event.time, event.kind, world_.modules()[event.module].id);
+    statistics_.countEvent(event.time, event.kind);
+    if (announce_.hearsEvents()) {
+      announce_(&Observer::eventStarted, event.time, event.kind, world_.modules()[event.module].id);
+    }
     dispatch(event);
-    if (!violation_) tellLatchChanges();
-    if (!violation_) {
+    if (!violation_ && latchChanges_.any()) tellLatchChanges();
+    if (!violation_ && mayViolate(mechanics_, placed_)) {
       if (auto violation = findViolation(world_, mechanics_, motions_, placed_)) {
         fail(std::move(*violation));
       }
@@ -297,6 +319,7 @@ void Simulator::dispatch(const Event& event) {
       if (program) program->onStart(context);
       break;
     case EventKind::kMessage:
+      statistics_.countMessage(event.message);
       transport_.received(event);
       if (program) program->onMessage(context, event.argument, event.message);
       break;

@@ -143,6 +143,7 @@ class Simulator {
     void latchChanged(Time /*t*/, const world::LatchPair& pair, bool latched) override {
       changes.push_back({pair, latched});
     }
+    bool any() const { return !changes.empty(); }
     std::vector<std::pair<world::LatchPair, bool>> changes;
   } latchChanges_;
   Mechanics mechanics_;

@@ -63,7 +63,9 @@ class StatisticsRecorder final : public Observer {
   StatisticsRecorder(const StatisticsRecorder&) = delete;
   StatisticsRecorder& operator=(const StatisticsRecorder&) = delete;
 
-  void eventStarted(Time t, EventKind kind, ModuleId) override {
+  // Events and messages are counted by the simulator's direct calls, not through the announcer
+  // (Announcer::subscribeToChanges): they need no module's id.
+  void countEvent(Time t, EventKind kind) {
     ++statistics_.eventsByKind[static_cast<size_t>(kind)];
     // The motions in flight at a time are counted once all its events are done: a motion that
     // ends at T and one that starts at T are never in flight together.
@@ -72,9 +74,7 @@ class StatisticsRecorder final : public Observer {
       countedAt_ = t;
     }
   }
-  void messageReceived(Time, ModuleId, int, const Message& message) override {
-    ++counterOf(message.typeName());
-  }
+  void countMessage(const Message& message) { ++counterOf(message.typeName()); }
   void pistonCompressed(Time, ModuleId, int) override { ++statistics_.deformations; }
   void pistonReleased(Time, ModuleId, int) override { ++statistics_.deformations; }
   void motionQueued(Time t, ModuleId mobile) override { startWaiting(t, mobile); }

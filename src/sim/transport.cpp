@@ -63,31 +63,30 @@ int Transport::sendToAll(uint32_t index, int exceptConnector, const Message& mes
     }
     return sent;
   }
-  // Every receiver is looked up before any is scheduled: the lookups do not depend on one
-  // another, so the processor waits for their cache misses together, not one after the other.
-  std::array<const Module*, geometry::kDirectionCount> partners{};
-  std::array<int, geometry::kDirectionCount> directions{};
+  // Every receiver is looked up before any is scheduled: the twelve neighbours come from one
+  // grid computation, and their records are read together, so that the processor waits for their
+  // cache misses at once, not one after the other.
+  std::array<uint32_t, geometry::kDirectionCount> around;
+  world_.neighbourIndices(module.cell, around);
+  std::array<uint32_t, geometry::kDirectionCount> partners;
+  std::array<int, geometry::kDirectionCount> partnerConnectors;
   int count = 0;
+  const std::span<const Module> modules = world_.modules();
   for (int connector = 0; connector < geometry::kDirectionCount; ++connector) {
     if (!((connectors >> connector) & 1)) continue;
-    directions[count] = module.orientation.worldDirection(connector);
-    partners[count] = world_.neighbour(module, directions[count]);
+    const int direction = module.orientation.worldDirection(connector);
+    const uint32_t partner = around[size_t(direction)];
+    if (partner == world::World::kNoModule) continue;  // nothing behind: send() refuses it too
+    partners[size_t(count)] = partner;
+    partnerConnectors[size_t(count)] =
+        modules[partner].orientation.ownConnector(geometry::oppositeDirection(direction));
     ++count;
-  }
-  std::array<int, geometry::kDirectionCount> partnerConnectors{};
-  for (int i = 0; i < count; ++i) {
-    if (partners[i]) {
-      partnerConnectors[i] =
-          partners[i]->orientation.ownConnector(geometry::oppositeDirection(directions[i]));
-    }
   }
   // Then in connector order, as one send() each would: the same jitter draws, the same events.
   for (int i = 0; i < count; ++i) {
-    if (!partners[i]) continue;  // a latch with nothing behind it: send() refuses it too
-    deliver(module, uint32_t(partners[i] - world_.modules().data()), partnerConnectors[i], message);
-    ++sent;
+    deliver(module, partners[size_t(i)], partnerConnectors[size_t(i)], message);
   }
-  return sent;
+  return count;
 }
 
 void Transport::deliver(const Module& sender, uint32_t partner, int partnerConnector,
@@ -95,12 +94,15 @@ void Transport::deliver(const Module& sender, uint32_t partner, int partnerConne
   Time delay = times_.delay;
   if (times_.jitter > 0) delay += random_.between(0, times_.jitter);
   const Time arrival = agenda_.now() + delay;
-  announce_(&Observer::messageSent, agenda_.now(), sender.id, world_.modules()[partner].id, message,
-            arrival);
+  if (announce_.hearsEvents()) {
+    announce_(&Observer::messageSent, agenda_.now(), sender.id, world_.modules()[partner].id,
+              message, arrival);
+  }
   agenda_.schedule(arrival, EventKind::kMessage, partner, partnerConnector, message);
 }
 
 void Transport::received(const Event& event) const {
+  if (!announce_.hearsEvents()) return;
   announce_(&Observer::messageReceived, event.time, world_.modules()[event.module].id,
             static_cast<int>(event.argument), event.message);
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 
 #include "geometry/lattice.h"
 
@@ -37,14 +38,8 @@ constexpr GridOffsets kGridOffsets = [] {
 
 }  // namespace
 
-uint16_t Occupancy::neighbourMask(const geometry::Cell& cell) const {
-  uint16_t mask = 0;
-  if (sparse_) {
-    for (int d = 0; d < geometry::kDirectionCount; ++d) {
-      if (find(cell + geometry::neighbourOffset(d)) != kEmpty) mask |= uint16_t(1u << d);
-    }
-    return mask;
-  }
+template <typename F>
+void Occupancy::forEachNeighbourSlot(const geometry::Cell& cell, F&& f) const {
   const int32_t shift = geometry::floorHalf(cell.z);
   const int64_t gx = int64_t{cell.x} + shift - box_.x0;
   const int64_t gy = int64_t{cell.y} + shift - box_.y0;
@@ -54,11 +49,9 @@ uint16_t Occupancy::neighbourMask(const geometry::Cell& cell) const {
   // Inside the box with a slot to spare on every side: no neighbour needs a bounds check.
   if (gx >= 1 && gy >= 1 && gz >= 1 && gx + 1 < box_.nx && gy + 1 < box_.ny && gz + 1 < box_.nz) {
     const int64_t at = gz * layer + gy * box_.nx + gx;
-    for (int d = 0; d < geometry::kDirectionCount; ++d) {
-      const auto& o = offsets[size_t(d)];
-      if (isSet(size_t(at + o[2] * layer + o[1] * box_.nx + o[0]))) mask |= uint16_t(1u << d);
-    }
-    return mask;
+    const auto& steps = neighbourSteps_[size_t(cell.z & 1)];
+    for (int d = 0; d < geometry::kDirectionCount; ++d) f(d, size_t(at + steps[size_t(d)]));
+    return;
   }
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     const auto& o = offsets[size_t(d)];
@@ -66,9 +59,74 @@ uint16_t Occupancy::neighbourMask(const geometry::Cell& cell) const {
     if (uint64_t(z) >= uint64_t(box_.nz)) continue;
     const int64_t x = gx + o[0], y = gy + o[1];
     if (uint64_t(x) >= uint64_t(box_.nx) || uint64_t(y) >= uint64_t(box_.ny)) continue;
-    if (isSet(size_t(z * layer + y * box_.nx + x))) mask |= uint16_t(1u << d);
+    f(d, size_t(z * layer + y * box_.nx + x));
   }
+}
+
+uint16_t Occupancy::neighbourMask(const geometry::Cell& cell) const {
+  uint16_t mask = 0;
+  if (sparse_) {
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      if (find(cell + geometry::neighbourOffset(d)) != kEmpty) mask |= uint16_t(1u << d);
+    }
+    return mask;
+  }
+  forEachNeighbourSlot(cell, [&](int d, size_t slot) {
+    if (isSet(slot)) mask |= uint16_t(1u << d);
+  });
   return mask;
+}
+
+uint16_t Occupancy::neighbours(const geometry::Cell& cell,
+                               std::array<uint32_t, geometry::kDirectionCount>& values) const {
+  values.fill(kEmpty);
+  uint16_t mask = 0;
+  if (sparse_) {
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      values[size_t(d)] = find(cell + geometry::neighbourOffset(d));
+      if (values[size_t(d)] != kEmpty) mask |= uint16_t(1u << d);
+    }
+    return mask;
+  }
+  forEachNeighbourSlot(cell, [&](int d, size_t slot) {
+    if (!isSet(slot)) return;
+    values[size_t(d)] = dense_[slot];
+    mask |= uint16_t(1u << d);
+  });
+  return mask;
+}
+
+uint64_t Occupancy::occupiedAt(const geometry::Cell& center,
+                               std::span<const geometry::Cell> offsets, uint64_t wanted) const {
+  uint64_t occupied = 0;
+  if (sparse_) {
+    for (uint64_t bits = wanted; bits; bits &= bits - 1) {
+      const int i = std::countr_zero(bits);
+      if (find(center + offsets[size_t(i)]) != kEmpty) occupied |= uint64_t{1} << i;
+    }
+    return occupied;
+  }
+  const int32_t shift = geometry::floorHalf(center.z);
+  const int64_t gx = int64_t{center.x} + shift - box_.x0;
+  const int64_t gy = int64_t{center.y} + shift - box_.y0;
+  const int64_t gz = int64_t{center.z} - box_.z0;
+  const int64_t layer = int64_t{box_.nx} * box_.ny;
+  const int32_t parity = center.z & 1;
+  for (uint64_t bits = wanted; bits; bits &= bits - 1) {
+    const int i = std::countr_zero(bits);
+    const geometry::Cell& o = offsets[size_t(i)];
+    // The skew's change from the centre's layer to the offset's: floor((z + dz) / 2) - floor(z /
+    // 2).
+    const int32_t skew = geometry::floorHalf(parity + o.z);
+    const int64_t x = gx + o.x + skew, y = gy + o.y + skew, z = gz + o.z;
+    // Outside the box: no value (one unsigned comparison per coordinate).
+    if (uint64_t(x) >= uint64_t(box_.nx) || uint64_t(y) >= uint64_t(box_.ny) ||
+        uint64_t(z) >= uint64_t(box_.nz)) {
+      continue;
+    }
+    if (isSet(size_t(z * layer + y * box_.nx + x))) occupied |= uint64_t{1} << i;
+  }
+  return occupied;
 }
 
 void Occupancy::insert(const geometry::Cell& cell, uint32_t value) {
@@ -129,8 +187,20 @@ void Occupancy::shrinkToFit() {
     }
   }
   dense_ = std::move(packed);
-  box_ = tight;
+  setBox(tight);
   rebuildBits();
+}
+
+void Occupancy::setBox(const Box& box) {
+  box_ = box;
+  const int64_t layer = int64_t{box_.nx} * box_.ny;
+  for (const int parity : {0, 1}) {
+    const auto& offsets = parity ? kGridOffsets.odd : kGridOffsets.even;
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      const auto& o = offsets[size_t(d)];
+      neighbourSteps_[size_t(parity)][size_t(d)] = o[2] * layer + o[1] * box_.nx + o[0];
+    }
+  }
 }
 
 void Occupancy::rebuildBits() {
@@ -184,7 +254,7 @@ void Occupancy::growToInclude(const geometry::Cell& cell) {
   std::vector<uint32_t> old(static_cast<size_t>(volume), kEmpty);
   old.swap(dense_);
   const Box oldBox = box_;
-  box_ = grown;
+  setBox(grown);
   for (int32_t z = 0; z < oldBox.nz; ++z) {
     for (int32_t y = 0; y < oldBox.ny; ++y) {
       const size_t from = (size_t(z) * oldBox.ny + y) * oldBox.nx;
@@ -213,7 +283,7 @@ void Occupancy::switchToSparse() {
   sparse_ = true;
   dense_ = {};
   occupiedBits_ = {};
-  box_ = {};
+  setBox({});
 }
 
 }  // namespace datomsim::world

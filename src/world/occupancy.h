@@ -6,10 +6,13 @@
 // box would be mostly empty, it switches for good to a flat hash table (cell_index.h).
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "geometry/cell.h"
+#include "geometry/lattice.h"
 #include "world/cell_index.h"
 
 namespace datomsim::world {
@@ -36,6 +39,15 @@ class Occupancy {
   // Bit d set: a value is stored at the neighbour of `cell` in world direction d. One grid
   // computation for all twelve, where twelve find() calls would make twelve.
   uint16_t neighbourMask(const geometry::Cell& cell) const;
+  // The values stored at the twelve neighbours of `cell`, by world direction (kEmpty where none),
+  // from the same single grid computation; returns their mask as neighbourMask does.
+  uint16_t neighbours(const geometry::Cell& cell,
+                      std::array<uint32_t, geometry::kDirectionCount>& values) const;
+
+  // Bit i set: a value is stored at center + offsets[i]; only the bits of `wanted` are looked at
+  // (at most 64 offsets, each coordinate within [-2, 2]). One grid computation for the lot.
+  uint64_t occupiedAt(const geometry::Cell& center, std::span<const geometry::Cell> offsets,
+                      uint64_t wanted) const;
 
   // Stores a value (not kEmpty) at a cell, replacing any.
   void insert(const geometry::Cell& cell, uint32_t value);
@@ -60,6 +72,11 @@ class Occupancy {
     if (gx < 0 || gy < 0 || gz < 0 || gx >= box_.nx || gy >= box_.ny || gz >= box_.nz) return -1;
     return (gz * box_.ny + gy) * box_.nx + gx;
   }
+  // Calls f(d, slot) for the slot of each neighbour of `cell` (world direction d) inside the box.
+  template <typename F>
+  void forEachNeighbourSlot(const geometry::Cell& cell, F&& f) const;
+  // Sets the box, and the slot steps to the neighbours that go with it.
+  void setBox(const Box& box);
   void growToInclude(const geometry::Cell& cell);
   void switchToSparse();
   bool isSet(size_t slot) const { return (occupiedBits_[slot >> 6] >> (slot & 63)) & 1; }
@@ -69,6 +86,9 @@ class Occupancy {
   bool sparse_ = false;
   size_t count_ = 0;
   Box box_;
+  // The slot step from a cell to its neighbour in each world direction, for a cell on an even and
+  // an odd layer of the current box: inside the box a neighbour's slot is one addition away.
+  std::array<std::array<int64_t, geometry::kDirectionCount>, 2> neighbourSteps_{};
   std::vector<uint32_t> dense_;
   // One bit per slot of dense_: whether it holds a value.
   std::vector<uint64_t> occupiedBits_;

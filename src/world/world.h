@@ -74,12 +74,28 @@ class World {
     return occupancy_.neighbourMask(cell);
   }
 
+  // Bit i set: a module sits at center + offsets[i]; only the bits of `wanted` are looked at (at
+  // most 64 offsets, each coordinate within [-2, 2]).
+  uint64_t occupiedAt(const geometry::Cell& center, std::span<const geometry::Cell> offsets,
+                      uint64_t wanted) const {
+    return occupancy_.occupiedAt(center, offsets, wanted);
+  }
+
+  // The indices in modules() of the modules around `cell`, by world direction (kNoModule where
+  // none), found together; returns their mask as neighbourMask does.
+  static constexpr uint32_t kNoModule = Occupancy::kEmpty;
+  uint16_t neighbourIndices(const geometry::Cell& cell,
+                            std::array<uint32_t, geometry::kDirectionCount>& indices) const {
+    return occupancy_.neighbours(cell, indices);
+  }
+
   // The neighbour of a module in world direction d (0..11), or nullptr.
   const Module* neighbour(const Module& module, int direction) const {
     return moduleAt(module.cell + geometry::neighbourOffset(direction));
   }
 
-  // Calls f(index) for every module, by index in modules(), in cell order (x, then y, then z).
+  // Calls f(index, cell) for every module, by index in modules() and its cell, in cell order (x,
+  // then y, then z).
   // When the modules fill a good part of the box of cells they span (a scene of boxes), the box is
   // walked and nothing is sorted or held; otherwise their indices are sorted.
   template <typename F>
@@ -149,8 +165,9 @@ void World::forEachInCellOrder(F&& f) const {
     for (int32_t x = low.x; x <= high.x; ++x) {
       for (int32_t y = low.y; y <= high.y; ++y) {
         for (int32_t z = low.z; z <= high.z; ++z) {
-          const uint32_t index = occupancy_.find({x, y, z});
-          if (index != Occupancy::kEmpty) f(index);
+          const geometry::Cell cell{x, y, z};
+          const uint32_t index = occupancy_.find(cell);
+          if (index != Occupancy::kEmpty) f(index, cell);
         }
       }
     }
@@ -160,7 +177,7 @@ void World::forEachInCellOrder(F&& f) const {
   for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(),
             [&](uint32_t a, uint32_t b) { return modules_[a].cell < modules_[b].cell; });
-  for (const uint32_t index : order) f(index);
+  for (const uint32_t index : order) f(index, modules_[index].cell);
 }
 
 }  // namespace datomsim::world

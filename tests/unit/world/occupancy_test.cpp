@@ -2,8 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <map>
 #include <random>
+#include <span>
+#include <vector>
+
+#include "geometry/lattice.h"
 
 namespace datomsim::world {
 namespace {
@@ -52,6 +58,82 @@ TEST(Occupancy, GrowingTowardsNegativeCoordinatesKeepsEntries) {
   Occupancy occupancy;
   for (int i = 0; i < 50; ++i) occupancy.insert({-i, -2 * i, i % 3}, uint32_t(i));
   for (int i = 0; i < 50; ++i) EXPECT_EQ(occupancy.find({-i, -2 * i, i % 3}), uint32_t(i));
+}
+
+// The lookups of many cells at once (a cell's twelve neighbours, a pattern of offsets) must find
+// what one find() per cell finds: inside a dense box (where they skip the bounds checks), at its
+// sides and corners, below the ground, and in a sparse table.
+void expectGroupLookupsAgreeWithFind(const Occupancy& occupancy, const Cell& low,
+                                     const Cell& high) {
+  // Every offset of the cube of side 5 around a cell: the largest pattern occupiedAt takes is 64.
+  std::vector<Cell> cube;
+  for (int z = -2; z <= 2; ++z) {
+    for (int y = -2; y <= 2; ++y) {
+      for (int x = -2; x <= 2; ++x) cube.push_back({x, y, z});
+    }
+  }
+  int found = 0;
+  for (int z = low.z; z <= high.z; ++z) {
+    for (int y = low.y; y <= high.y; ++y) {
+      for (int x = low.x; x <= high.x; ++x) {
+        const Cell cell{x, y, z};
+        std::array<uint32_t, geometry::kDirectionCount> values;
+        const uint16_t mask = occupancy.neighbours(cell, values);
+        ASSERT_EQ(mask, occupancy.neighbourMask(cell));
+        for (int d = 0; d < geometry::kDirectionCount; ++d) {
+          const uint32_t expected = occupancy.find(cell + geometry::neighbourOffset(d));
+          ASSERT_EQ(values[size_t(d)], expected) << geometry::toString(cell) << " direction " << d;
+          ASSERT_EQ(bool(mask & (1u << d)), expected != Occupancy::kEmpty);
+        }
+        for (size_t first = 0; first < cube.size(); first += 64) {
+          const std::span<const Cell> offsets(cube.data() + first,
+                                              std::min<size_t>(64, cube.size() - first));
+          // Every offset, then every other one: bits outside `wanted` stay clear.
+          for (const uint64_t wanted : {~uint64_t{0}, uint64_t{0x5555555555555555}}) {
+            const uint64_t bits = occupancy.occupiedAt(cell, offsets, wanted);
+            for (size_t i = 0; i < offsets.size(); ++i) {
+              const bool expected =
+                  (wanted >> i & 1) && occupancy.find(cell + offsets[i]) != Occupancy::kEmpty;
+              ASSERT_EQ(bool(bits >> i & 1), expected)
+                  << geometry::toString(cell) << " + " << geometry::toString(offsets[i]);
+              found += expected;
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(found, 1000);
+}
+
+TEST(Occupancy, GroupLookupsFindWhatFindFindsInADenseBoxWithHoles) {
+  Occupancy occupancy;
+  std::mt19937 random(3);
+  uint32_t value = 0;
+  // Layers from the ground up, odd and even (the skew), a fifth of the cells left empty.
+  for (int z = 0; z < 7; ++z) {
+    for (int y = 0; y < 9; ++y) {
+      for (int x = 0; x < 9; ++x) {
+        if (random() % 5 != 0) occupancy.insert({x - z / 2, y - z / 2, z}, value++);
+      }
+    }
+  }
+  ASSERT_FALSE(occupancy.isSparse());
+  expectGroupLookupsAgreeWithFind(occupancy, {-6, -6, -2}, {10, 10, 8});
+}
+
+TEST(Occupancy, GroupLookupsFindWhatFindFindsInASparseTable) {
+  Occupancy occupancy;
+  std::mt19937 random(5);
+  uint32_t value = 0;
+  // A small cluster and far scattered cells: the table goes sparse.
+  for (int i = 0; i < 400; ++i) {
+    occupancy.insert({int(random() % 6), int(random() % 6), int(random() % 4)}, value++);
+    occupancy.insert({int(random() % 200000), int(random() % 200000), int(random() % 300)},
+                     value++);
+  }
+  ASSERT_TRUE(occupancy.isSparse());
+  expectGroupLookupsAgreeWithFind(occupancy, {-3, -3, -1}, {8, 8, 5});
 }
 
 }  // namespace

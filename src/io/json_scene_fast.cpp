@@ -283,16 +283,21 @@ class FastReader {
     const char* at;
     const char* end;
 
+    // Inline, as number() is: a module takes nine literals and eight numbers, and a call for
+    // each (memcmp's among them) costs more than the comparing.
     template <size_t N>
-    bool literal(const char (&text)[N]) {
+    [[gnu::always_inline]] bool literal(const char (&text)[N]) {
       constexpr size_t length = N - 1;
-      if (size_t(end - at) < length || std::memcmp(at, text, length) != 0) return false;
+      if (size_t(end - at) < length) return false;
+      for (size_t i = 0; i < length; ++i) {
+        if (at[i] != text[i]) return false;
+      }
       at += length;
       return true;
     }
     // An integer in [low, high] as integer() reads one, followed by ',' or ']', so that "1.5"
     // or "2e3" is not taken for 1 or 2.
-    bool number(int64_t& into, int64_t low, int64_t high) {
+    [[gnu::always_inline]] bool number(int64_t& into, int64_t low, int64_t high) {
       const bool negative = at < end && *at == '-';
       const char* const first = at + (negative ? 1 : 0);
       const char* digit = first;

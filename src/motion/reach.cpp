@@ -31,6 +31,9 @@ Result<DistanceMap> reach(const world::World& fixedWorld, const RuleTable& table
                  "; the mobile must be taken out of the fixed world first"};
   }
   DistanceMap map(goal, options);
+  // A mobile is always next to a pivot: the index covers the cells one step around the modules
+  // from the start, instead of regrowing as the search spreads.
+  map.index_.reserveAround(fixedWorld.occupancy(), 1, 0);
   map.index_.insert(goal, 0);
   map.cells_.push_back({goal, 0});
 

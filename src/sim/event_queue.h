@@ -5,12 +5,14 @@
 // order they were created: runs are reproducible (docs/simulation.md).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
 #include <deque>
 #include <map>
 #include <memory>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -72,10 +74,20 @@ namespace datomsim::sim {
 //
 // A bucket is a chain of fixed chunks from a pool, given back once read, so that the queue holds
 // memory for the events in flight only. In a chunk an event takes a 32-byte head and its
-// message's payload, not a whole Message: a flood's hop count travels in 40 bytes where an Event
-// is 96, and a million-module flood has hundreds of thousands in flight at once.
+// message's payload, not a whole Message: a single message of a 4-byte hop count takes 40 bytes
+// where an Event is 96. The same message to several modules at the same time (a module telling
+// all its neighbours) is one record: the head and the payload once, then 8 bytes for each receiver
+// after the first; a flood's eleven messages take 120 bytes, not 440, and a million-module flood
+// has hundreds of thousands in flight at once.
 class EventQueue {
  public:
+  // One receiver of a message sent to several at once: a module and the event's argument (the
+  // receiver's own connector).
+  struct Receiver {
+    uint32_t module;
+    int32_t argument;
+  };
+
   EventQueue() = default;
   // Holds iterators and pointers into itself.
   EventQueue(const EventQueue&) = delete;
@@ -86,10 +98,20 @@ class EventQueue {
 
   void schedule(Time time, EventKind kind, uint32_t moduleIndex, int32_t argument,
                 const Message& message = {}) {
-    write(time, nextSequence_++, kind, moduleIndex, argument, message);
+    const Receiver receiver{moduleIndex, argument};
+    write(time, kind, {&receiver, 1}, message);
   }
   void push(const Event& event) {
-    write(event.time, nextSequence_++, event.kind, event.module, event.argument, event.message);
+    schedule(event.time, event.kind, event.module, event.argument, event.message);
+  }
+  // Schedules a kMessage event at `time` for each receiver, in this order, all carrying `message`:
+  // the same events as one schedule() each, kept as one record.
+  void scheduleMessages(Time time, std::span<const Receiver> receivers, const Message& message) {
+    while (!receivers.empty()) {
+      const size_t count = std::min(receivers.size(), kMaxReceivers);
+      write(time, EventKind::kMessage, receivers.first(count), message);
+      receivers = receivers.subspan(count);
+    }
   }
   // Schedules a kStart event at `time` for each module, in this order: the same events as one
   // schedule() each, kept as 4 bytes per module (starting a million modules at once would hold
@@ -114,7 +136,7 @@ class EventQueue {
       top_ = starts_.front().head();
     } else {
       const auto& [time, bucket] = *buckets_.begin();
-      read(time, *bucket.head, bucket.head->readOffset, top_);
+      read(time, *bucket.head, top_);
     }
     return top_;
   }
@@ -143,8 +165,12 @@ class EventQueue {
     Chunk* chunk = bucket.head;
     // Built in place: an event copied out whole just after its payload was written in pieces
     // makes the processor wait for the pieces.
-    read(first->first, *chunk, chunk->readOffset, event);
-    chunk->readOffset += recordSize(*chunk, chunk->readOffset);
+    read(first->first, *chunk, event);
+    const Head& head = headAt(*chunk, chunk->readOffset);
+    if (++chunk->readMember == head.count) {
+      chunk->readOffset += uint32_t(recordSize(head));
+      chunk->readMember = 0;
+    }
     ++chunk->readOrdinal;
     if (chunk->readOrdinal == chunk->writeOrdinal) {
       // Read: back to the pool, and the bucket with it when it was its last chunk.
@@ -160,24 +186,32 @@ class EventQueue {
   }
 
  private:
-  // An event in a chunk: this head, then its message's payload.
+  // A record in a chunk: this head, then its message's payload, then the receivers after the
+  // first (`count` receivers in all, the first in the head).
   struct Head {
-    uint64_t sequence;
-    const void* type;  // the message's type record, or null
+    uint64_t sequence;  // the first receiver's; the others follow one by one
+    const void* type;   // the message's type record, or null
     uint32_t module;
     int32_t argument;
     EventKind kind;
-    uint8_t size;  // payload bytes after the head
+    uint8_t size;    // payload bytes after the head
+    uint16_t count;  // receivers
   };
   // A payload is copied in whole words (MessageBytes::copyWords): records keep word alignment.
   static_assert(sizeof(Head) % 8 == 0 && alignof(Head) == 8 && Message::kCapacity % 8 == 0);
-  static constexpr size_t kChunkBytes = 32 * 1024;
-  static constexpr size_t kChunkEvents = kChunkBytes / sizeof(Head);
+  static_assert(sizeof(Receiver) == 8);
+  // A chunk holds kChunkBytes of records and at most kChunkEvents events, whichever comes first:
+  // single events fill the bytes (a 40-byte record each), messages to many receivers the events
+  // (about 11 bytes each).
+  static constexpr size_t kChunkBytes = 16 * 1024;
+  static constexpr size_t kChunkEvents = 1024;
+  static constexpr size_t kMaxReceivers = 64;  // per record; more take several
   struct Chunk {
     alignas(Head) std::array<unsigned char, kChunkBytes> bytes;
     std::array<uint32_t, kChunkEvents> modules;  // by the events' order in the chunk
-    uint32_t readOffset = 0, writeOffset = 0;
-    uint32_t readOrdinal = 0, writeOrdinal = 0;
+    uint32_t readOffset = 0, writeOffset = 0;    // records
+    uint32_t readOrdinal = 0, writeOrdinal = 0;  // events
+    uint32_t readMember = 0;                     // the receiver of the record at readOffset
     Chunk* next = nullptr;
   };
   struct Bucket {
@@ -198,41 +232,66 @@ class EventQueue {
   static constexpr size_t footprint(size_t payload) {
     return (sizeof(Head) + payload + alignof(Head) - 1) / alignof(Head) * alignof(Head);
   }
-  static size_t recordSize(const Chunk& chunk, uint32_t offset) {
-    return footprint(reinterpret_cast<const Head*>(chunk.bytes.data() + offset)->size);
+  static size_t recordSize(const Head& head) {
+    return footprint(head.size) + (head.count - 1) * sizeof(Receiver);
   }
-  // The event at `offset` into `event`. Its message's bytes past the payload keep what was
+  static const Head& headAt(const Chunk& chunk, uint32_t offset) {
+    return *reinterpret_cast<const Head*>(chunk.bytes.data() + offset);
+  }
+  // The next event of a chunk into `event`. Its message's bytes past the payload keep what was
   // there: a message is read as its own type (Message::as), never past its size.
-  static void read(Time time, const Chunk& chunk, uint32_t offset, Event& event) {
-    const auto* head = reinterpret_cast<const Head*>(chunk.bytes.data() + offset);
+  static void read(Time time, const Chunk& chunk, Event& event) {
+    const Head& head = headAt(chunk, chunk.readOffset);
+    const unsigned char* payload = chunk.bytes.data() + chunk.readOffset + sizeof(Head);
     event.time = time;
-    event.sequence = head->sequence;
-    event.kind = head->kind;
-    event.module = head->module;
-    event.argument = head->argument;
-    detail::MessageBytes::assign(event.message, head->type,
-                                 chunk.bytes.data() + offset + sizeof(Head), head->size);
+    event.sequence = head.sequence + chunk.readMember;
+    event.kind = head.kind;
+    if (chunk.readMember == 0) {
+      event.module = head.module;
+      event.argument = head.argument;
+    } else {
+      Receiver receiver;
+      std::memcpy(
+          &receiver,
+          payload + footprint(head.size) - sizeof(Head) + (chunk.readMember - 1) * sizeof(Receiver),
+          sizeof(Receiver));
+      event.module = receiver.module;
+      event.argument = receiver.argument;
+    }
+    detail::MessageBytes::assign(event.message, head.type, payload, head.size);
   }
-  void write(Time time, uint64_t sequence, EventKind kind, uint32_t module, int32_t argument,
+  void write(Time time, EventKind kind, std::span<const Receiver> receivers,
              const Message& message) {
     const size_t payload = detail::MessageBytes::size(message);
-    const size_t bytes = footprint(payload);
+    const size_t bytes = footprint(payload) + (receivers.size() - 1) * sizeof(Receiver);
     if (last_ == buckets_.end() || last_->first != time) last_ = buckets_.try_emplace(time).first;
     Bucket& bucket = last_->second;
-    if (!bucket.tail || bucket.tail->writeOffset + bytes > kChunkBytes) {
+    if (!bucket.tail || bucket.tail->writeOffset + bytes > kChunkBytes ||
+        bucket.tail->writeOrdinal + receivers.size() > kChunkEvents) {
       Chunk* chunk = acquire();
       (bucket.tail ? bucket.tail->next : bucket.head) = chunk;
       bucket.tail = chunk;
     }
     Chunk& chunk = *bucket.tail;
-    auto* head = reinterpret_cast<Head*>(chunk.bytes.data() + chunk.writeOffset);
-    *head = Head{sequence, detail::MessageBytes::type(message), module, argument,
-                 kind,     static_cast<uint8_t>(payload)};
-    detail::MessageBytes::copyWords(chunk.bytes.data() + chunk.writeOffset + sizeof(Head),
-                                    detail::MessageBytes::bytes(message), payload);
+    unsigned char* at = chunk.bytes.data() + chunk.writeOffset;
+    *reinterpret_cast<Head*>(at) = Head{nextSequence_,
+                                        detail::MessageBytes::type(message),
+                                        receivers[0].module,
+                                        receivers[0].argument,
+                                        kind,
+                                        static_cast<uint8_t>(payload),
+                                        static_cast<uint16_t>(receivers.size())};
+    detail::MessageBytes::copyWords(at + sizeof(Head), detail::MessageBytes::bytes(message),
+                                    payload);
+    if (receivers.size() > 1) {
+      std::memcpy(at + footprint(payload), receivers.data() + 1,
+                  (receivers.size() - 1) * sizeof(Receiver));
+    }
     chunk.writeOffset += uint32_t(bytes);
-    chunk.modules[chunk.writeOrdinal++] = module;
-    ++size_;
+    for (const Receiver& receiver : receivers)
+      chunk.modules[chunk.writeOrdinal++] = receiver.module;
+    nextSequence_ += receivers.size();
+    size_ += receivers.size();
   }
   Chunk* acquire() {
     if (pool_.empty()) {
@@ -246,6 +305,7 @@ class EventQueue {
   void release(Chunk* chunk) {
     chunk->readOffset = chunk->writeOffset = 0;
     chunk->readOrdinal = chunk->writeOrdinal = 0;
+    chunk->readMember = 0;
     chunk->next = nullptr;
     pool_.push_back(chunk);
   }
@@ -255,10 +315,9 @@ class EventQueue {
     if (buckets_.empty()) return true;
     const StartBatch& batch = starts_.front();
     const auto& [time, bucket] = *buckets_.begin();
-    const auto* head =
-        reinterpret_cast<const Head*>(bucket.head->bytes.data() + bucket.head->readOffset);
+    const Chunk& chunk = *bucket.head;
     return std::pair(batch.time, batch.firstSequence + batch.next) <
-           std::pair(time, head->sequence);
+           std::pair(time, headAt(chunk, chunk.readOffset).sequence + chunk.readMember);
   }
 
   std::map<Time, Bucket> buckets_;

@@ -83,9 +83,23 @@ int Transport::sendToAll(uint32_t index, int exceptConnector, const Message& mes
     ++count;
   }
   // Then in connector order, as one send() each would: the same jitter draws, the same events.
-  for (int i = 0; i < count; ++i) {
-    deliver(module, partners[size_t(i)], partnerConnectors[size_t(i)], message);
+  if (times_.jitter > 0) {
+    for (int i = 0; i < count; ++i) {
+      deliver(module, partners[size_t(i)], partnerConnectors[size_t(i)], message);
+    }
+    return count;
   }
+  // Without jitter they all arrive together: one record in the agenda for all of them.
+  const Time arrival = agenda_.now() + times_.delay;
+  std::array<EventQueue::Receiver, geometry::kDirectionCount> receivers;
+  for (int i = 0; i < count; ++i) {
+    receivers[size_t(i)] = {partners[size_t(i)], partnerConnectors[size_t(i)]};
+    if (announce_.hearsEvents()) {
+      announce_(&Observer::messageSent, agenda_.now(), module.id,
+                world_.modules()[partners[size_t(i)]].id, message, arrival);
+    }
+  }
+  agenda_.scheduleMessages(arrival, std::span(receivers).first(size_t(count)), message);
   return count;
 }
 

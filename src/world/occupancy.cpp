@@ -159,6 +159,27 @@ void Occupancy::erase(const geometry::Cell& cell) {
   }
 }
 
+void Occupancy::reserveAround(const Occupancy& other, int32_t margin, int32_t lowestLayer) {
+  if (sparse_ || count_ > 0 || other.sparse_ || other.count_ == 0) return;
+  const Box& near = other.box_;
+  // A step changes the grid x and y by up to 2 (one of its own, one of the skew) and z by 1.
+  Box box;
+  box.z0 = std::max(lowestLayer, near.z0 - margin);
+  box.nz = near.z0 + near.nz + margin - box.z0;
+  box.x0 = near.x0 - 2 * margin;
+  box.nx = near.nx + 4 * margin;
+  box.y0 = near.y0 - 2 * margin;
+  box.ny = near.ny + 4 * margin;
+  const int64_t volume = int64_t{box.nx} * box.ny * box.nz;
+  if (box.nz <= 0 ||
+      volume > std::max(kAlwaysDenseSlots, kMaxSlotsPerCell * int64_t(other.count_))) {
+    return;
+  }
+  dense_.assign(size_t(volume), kEmpty);
+  setBox(box);
+  rebuildBits();
+}
+
 void Occupancy::shrinkToFit() {
   if (sparse_ || count_ == 0) return;
   // The tight box, in grid coordinates of the current box.

@@ -52,6 +52,11 @@ class Occupancy {
   // Stores a value (not kEmpty) at a cell, replacing any.
   void insert(const geometry::Cell& cell, uint32_t value);
   void erase(const geometry::Cell& cell);
+  // Makes room, in an empty dense occupancy, for every cell within `margin` steps of the box of
+  // `other` (no layer below `lowestLayer`), so that filling cells near other's values never
+  // regrows the box: an index of the cells around a world's modules. Does nothing when either is
+  // sparse or the box would be too large to stay dense.
+  void reserveAround(const Occupancy& other, int32_t margin, int32_t lowestLayer);
   // Shrinks the dense box to the cells in use, dropping the slack left for growth.
   void shrinkToFit();
 

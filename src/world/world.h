@@ -129,6 +129,10 @@ class World {
   // A fresh id: one more than the largest in use.
   ModuleId nextFreeId() const;
 
+  // Which module index is in which cell: for indexes of cells near the modules to take its box
+  // (Occupancy::reserveAround).
+  const Occupancy& occupancy() const { return occupancy_; }
+
   // Bytes held by the module store and the occupancy index (for benchmarks).
   size_t memoryBytes() const;
 

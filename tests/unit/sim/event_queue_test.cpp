@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <string>
 #include <string_view>
 #include <tuple>
 #include <vector>
@@ -147,6 +148,67 @@ TEST(EventQueue, KeepsEveryMessageWholeHoweverSmallOrLarge) {
     ++taken;
   }
   EXPECT_EQ(taken, kEvents);
+}
+
+// One message to many receivers is one record; it must come out as one schedule() per receiver
+// would: the same times, sequences, modules, arguments and payloads, among single events, across
+// chunks, for any number of receivers (more than a record holds take several), and the modules
+// the simulator warms the caches for are those of the events to come.
+TEST(EventQueue, AMessageToManyReceiversRunsAsOneEventEach) {
+  using Record = std::tuple<Time, uint64_t, EventKind, uint32_t, int32_t, std::string, int>;
+  const auto fill = [](EventQueue& queue, bool together) {
+    for (int round = 0; round < 400; ++round) {
+      const Time time = 10 * (round % 4);
+      const int count = round % 5 == 0 ? 150 : 1 + round % 12;
+      std::vector<EventQueue::Receiver> receivers;
+      for (int k = 0; k < count; ++k) {
+        receivers.push_back({uint32_t(round * 1000 + k), int32_t(k % 12)});
+      }
+      const Message message = round % 3 == 0
+                                  ? Message::of(Middle{round, round * 0.25, int16_t(-round)})
+                                  : Message::of(Tiny{uint8_t(round)});
+      if (together) {
+        queue.scheduleMessages(time, receivers, message);
+      } else {
+        for (const auto& [module, argument] : receivers) {
+          queue.schedule(time, EventKind::kMessage, module, argument, message);
+        }
+      }
+      queue.schedule(time + 5, EventKind::kTimer, uint32_t(round), -round);
+    }
+  };
+  const auto take = [](EventQueue& queue) {
+    std::vector<Record> taken;
+    std::vector<uint32_t> warmed, modules;
+    while (!queue.empty()) {
+      warmed.push_back(queue.upcomingModule(3));
+      const Event& event = queue.pop();
+      modules.push_back(event.module);
+      int payload = -1;
+      if (const auto* tiny = event.message.as<Tiny>()) payload = tiny->value;
+      if (const auto* middle = event.message.as<Middle>()) {
+        EXPECT_EQ(middle->b, middle->a * 0.25);
+        EXPECT_EQ(middle->c, int16_t(-middle->a));
+        payload = middle->a;
+      }
+      taken.emplace_back(event.time, event.sequence, event.kind, event.module, event.argument,
+                         std::string(event.message.typeName()), payload);
+    }
+    // A module warmed for is that of the event three places on, or none (another chunk).
+    for (size_t i = 0; i < warmed.size(); ++i) {
+      if (warmed[i] != EventQueue::kNoModule) {
+        EXPECT_EQ(warmed[i], modules[i + 3]);
+      }
+    }
+    return taken;
+  };
+  EventQueue together, oneByOne;
+  fill(together, true);
+  fill(oneByOne, false);
+  EXPECT_EQ(together.size(), oneByOne.size());
+  const std::vector<Record> taken = take(together);
+  EXPECT_GT(taken.size(), 10000u);
+  EXPECT_EQ(taken, take(oneByOne));
 }
 
 }  // namespace

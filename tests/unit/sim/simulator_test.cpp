@@ -72,10 +72,22 @@ TEST(Simulator, AMessageArrivesAfterTheDelayThroughTheFacingConnector) {
 
 // What each module heard: (time, receiver, its connector, hops).
 using Heard = std::vector<std::tuple<Time, ModuleId, int, int32_t>>;
+// What the simulator announced of every message: (sent at, from, to, arrival) when sent, and
+// (time, receiver, connector) when received.
+struct Announced final : Observer {
+  void messageSent(Time t, ModuleId from, ModuleId to, const Message&, Time arrival) override {
+    sent.emplace_back(t, from, to, arrival);
+  }
+  void messageReceived(Time t, ModuleId to, int connector, const Message&) override {
+    received.emplace_back(t, to, connector);
+  }
+  std::vector<std::tuple<Time, ModuleId, ModuleId, Time>> sent;
+  std::vector<std::tuple<Time, ModuleId, int>> received;
+};
 
 // Module 1 at the centre of a turned neighbourhood tells its latched neighbours but one, either
 // through sendToAll or with one send() each; the rest only listen.
-Heard tellNeighbours(bool all, int* sentCount) {
+Heard tellNeighbours(bool all, int* sentCount, Time jitter, Announced* announced) {
   std::map<uint32_t, Script> programs;
   Heard heard;
   const int except = 3;
@@ -96,7 +108,7 @@ Heard tellNeighbours(bool all, int* sentCount) {
   }
   SimulationOptions options;
   options.messageDelay = 5 * kMillisecond;
-  options.messageJitter = 3 * kMillisecond;  // the same draws, in the same order, or not
+  options.messageJitter = jitter;  // with jitter, the same draws in the same order
   WorldBuilder world;
   const Cell centre{1, 1, 1};
   world.module(centre, 5);
@@ -104,21 +116,36 @@ Heard tellNeighbours(bool all, int* sentCount) {
   for (int d = 0; d < 7; ++d)
     world.module(centre + geometry::neighbourOffset(2 * d % 12 + d / 6), orientations[size_t(d)]);
   Simulator simulator(world.build(), table(), options);
+  if (announced) simulator.subscribe(announced);
   simulator.install(scripts(programs));
   simulator.startAll();
   EXPECT_TRUE(simulator.run().ok());
+  EXPECT_EQ(simulator.statistics().messagesByType.at("Ping"), uint64_t(*sentCount));
   return heard;
 }
 
 TEST(Simulator, SendingToAllIsTheSameAsOneSendEach) {
-  int sentByAll = -1, sentOneByOne = -1;
-  const Heard all = tellNeighbours(true, &sentByAll);
-  const Heard oneByOne = tellNeighbours(false, &sentOneByOne);
-  // Seven neighbours, all latched; the excepted connector faces one of them or none.
-  EXPECT_GE(sentByAll, 6);
-  EXPECT_EQ(sentByAll, sentOneByOne);
-  EXPECT_EQ(all.size(), size_t(sentByAll));
-  EXPECT_EQ(all, oneByOne);
+  // With jitter every message has its own delay; without, sendToAll keeps them as one record of
+  // the agenda. Either way the same events, in the same order, and the same announcements.
+  for (const Time jitter : {Time{0}, 3 * kMillisecond}) {
+    for (const bool subscribed : {false, true}) {
+      SCOPED_TRACE(::testing::Message() << "jitter " << jitter << ", subscribed " << subscribed);
+      int sentByAll = -1, sentOneByOne = -1;
+      Announced byAll, oneByOne;
+      const Heard all = tellNeighbours(true, &sentByAll, jitter, subscribed ? &byAll : nullptr);
+      const Heard each =
+          tellNeighbours(false, &sentOneByOne, jitter, subscribed ? &oneByOne : nullptr);
+      // Seven neighbours, all latched; the excepted connector faces one of them or none.
+      EXPECT_GE(sentByAll, 6);
+      EXPECT_EQ(sentByAll, sentOneByOne);
+      EXPECT_EQ(all.size(), size_t(sentByAll));
+      EXPECT_EQ(all, each);
+      EXPECT_EQ(byAll.sent, oneByOne.sent);
+      EXPECT_EQ(byAll.received, oneByOne.received);
+      EXPECT_EQ(byAll.sent.size(), subscribed ? size_t(sentByAll) : 0u);
+      EXPECT_EQ(byAll.received.size(), subscribed ? size_t(sentByAll) : 0u);
+    }
+  }
 }
 
 TEST(Simulator, EventsAtTheSameTimeRunInTheOrderTheyWereScheduled) {

@@ -7,6 +7,7 @@
 #include <map>
 #include <random>
 #include <span>
+#include <tuple>
 #include <vector>
 
 #include "geometry/lattice.h"
@@ -134,6 +135,45 @@ TEST(Occupancy, GroupLookupsFindWhatFindFindsInASparseTable) {
   }
   ASSERT_TRUE(occupancy.isSparse());
   expectGroupLookupsAgreeWithFind(occupancy, {-3, -3, -1}, {8, 8, 5});
+}
+
+TEST(Occupancy, RoomMadeAroundAnotherHoldsItsNeighboursWithoutRegrowing) {
+  // A leaning box of cells (odd and even layers), and an index of every cell next to them.
+  Occupancy modules;
+  std::vector<Cell> cells;
+  for (int z = 0; z < 5; ++z) {
+    for (int y = 0; y < 6; ++y) {
+      for (int x = 0; x < 7; ++x) cells.push_back({x - z, y, z});
+    }
+  }
+  for (uint32_t i = 0; i < cells.size(); ++i) modules.insert(cells[i], i);
+  Occupancy around;
+  around.reserveAround(modules, 1, 0);
+  const size_t reserved = around.memoryBytes();
+  EXPECT_GT(reserved, 0u);
+  std::map<std::tuple<int, int, int>, uint32_t> expected;
+  uint32_t value = 0;
+  for (const Cell& cell : cells) {
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      const Cell next = cell + geometry::neighbourOffset(d);
+      if (next.z < 0 || expected.count({next.x, next.y, next.z})) continue;
+      around.insert(next, value);
+      expected[{next.x, next.y, next.z}] = value++;
+    }
+  }
+  EXPECT_EQ(around.memoryBytes(), reserved);  // no cell needed a larger box
+  EXPECT_FALSE(around.isSparse());
+  for (const auto& [key, stored] : expected) {
+    const auto& [x, y, z] = key;
+    EXPECT_EQ(around.find({x, y, z}), stored);
+  }
+  // A cell beyond the room still goes in (the box grows).
+  around.insert({40, 40, 3}, 7);
+  EXPECT_EQ(around.find({40, 40, 3}), 7u);
+  EXPECT_EQ(around.find(cells.front() + geometry::neighbourOffset(0)),
+            expected.at({cells.front().x + geometry::neighbourOffset(0).x,
+                         cells.front().y + geometry::neighbourOffset(0).y,
+                         cells.front().z + geometry::neighbourOffset(0).z}));
 }
 
 }  // namespace

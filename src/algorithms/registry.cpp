@@ -38,8 +38,8 @@ class TypedPrograms final : public ProgramSet {
     ids_[slot] = id;
   }
   program::ModuleProgram* programAt(uint32_t slot) override { return &programs_[slot]; }
-  void prefetch(uint32_t slot, bool near) const override {
-    if (!near) __builtin_prefetch(&programs_[slot]);
+  void prefetch(uint32_t far, uint32_t) const override {
+    if (far != kNoSlot) __builtin_prefetch(&programs_[far]);
   }
 
   std::vector<std::pair<geometry::Cell, int>> distances(
@@ -170,7 +170,7 @@ class EntryPrograms final : public ProgramSet {
 
   void make(ModuleId id, uint32_t slot) override { host_.make(id, slot); }
   program::ModuleProgram* programAt(uint32_t) override { return &host_; }
-  void prefetch(uint32_t slot, bool near) const override { host_.prefetch(slot, near); }
+  void prefetch(uint32_t far, uint32_t near) const override { host_.prefetch(far, near); }
 
   std::vector<std::pair<geometry::Cell, int>> distances(const ModulesAtEnd&) const override {
     return {};

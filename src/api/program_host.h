@@ -31,14 +31,12 @@ class ProgramHost final : public program::ModuleProgram {
     return slot < programs_.size() ? programs_[slot].get() : nullptr;
   }
   size_t size() const { return programs_.size(); }
-  // Brings the pointer to a module's Program into the cache (far ahead), then the Program (near).
-  void prefetch(uint32_t slot, bool near) const {
-    if (slot >= programs_.size()) return;
-    if (near) {
-      __builtin_prefetch(programs_[slot].get());
-    } else {
-      __builtin_prefetch(&programs_[slot]);
-    }
+  // Brings the pointer to the Program of the slot `far` into the cache, and the Program of the
+  // slot `near`, whose pointer was brought some events before (ProgramSource::prefetch); slots
+  // out of range, kNoSlot among them, are passed over.
+  void prefetch(uint32_t far, uint32_t near) const {
+    if (far < programs_.size()) __builtin_prefetch(&programs_[far]);
+    if (near < programs_.size()) __builtin_prefetch(programs_[near].get());
   }
   const Parameters& parameters() const { return parameters_; }
 

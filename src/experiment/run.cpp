@@ -305,10 +305,10 @@ void RunReports::forEach(std::string_view key,
   };
   world_.forEachInCellOrder([&](uint32_t slot, const Cell& cell) {
     if (given - taken == kAhead) readOne();
-    programs_->prefetch(slot, false);
     waiting[given++ % kAhead] = {slot, cell};
-    if (given - taken > kNear)
-      programs_->prefetch(waiting[(given - kNear - 1) % kAhead].first, true);
+    const bool nearOne = given - taken > kNear;
+    programs_->prefetch(slot, nearOne ? waiting[(given - kNear - 1) % kAhead].first
+                                      : algorithms::ProgramSet::kNoSlot);
   });
   while (taken < given) readOne();
 }

@@ -121,8 +121,11 @@ Result<Scene> SceneHandler::finish() {
     for (const PendingModule& module : pending_) place(module);
     pending_ = {};
   }
-  if (placementError_) return Error{*placementError_};
   world::World& world = scene_.world;
+  // A placement error was found with the cells before it indexed (place), so it is the first
+  // error; otherwise the cells are indexed now, once all modules are in (World::addUnindexed).
+  if (placementError_) return Error{*placementError_};
+  if (const auto clash = world.indexCells()) return Error{clashError(clash->first)};
   world.shrinkToFit();
   world.latchAllNeighbours();
   return std::move(scene_);
@@ -150,14 +153,28 @@ void SceneHandler::place(const PendingModule& pending) {
   world::World& world = scene_.world;
   const world::Module& module = pending.module;
   // What World::add refuses is worded again here to name the other module by its place in the
-  // file. Messages are only built on failure: this runs millions of times.
-  if (Status added = world.add(module); !added) {
+  // file. Messages are only built on failure: this runs millions of times. The cells are checked
+  // against each other at the end (finish).
+  if (Status added = world.addUnindexed(module); !added) {
+    // Rare: the cells so far are indexed first, so that the error is worded as one added with
+    // its cell checked would be; two of them in one cell are an earlier error.
+    if (const auto clash = world.indexCells()) {
+      placementError_ = clashError(clash->first);
+      return;
+    }
     if (!world.isInside(module.cell) || world.moduleAt(module.cell) || world.find(module.id)) {
       placementError_ = placementError(pending, index);
     } else {
       placementError_ = failure(fmt::format("modules[{}]", index), added.error()).message;
     }
   }
+}
+
+// The module at `index` in the list sits in the cell of an earlier one.
+std::string SceneHandler::clashError(size_t index) {
+  PendingModule later;
+  later.module = scene_.world.modules()[index];
+  return placementError(later, index);
 }
 
 // Why a module cannot be placed in the world built so far.

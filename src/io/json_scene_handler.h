@@ -115,6 +115,8 @@ class SceneHandler {
   void startModules();
   // Puts a module into the world, or keeps the first reason it cannot be.
   void place(const PendingModule& module);
+  // The error of the module at `index` in the world, which sits in the cell of an earlier one.
+  std::string clashError(size_t index);
   // Why the module at `index` in the list cannot be placed in the world built so far.
   std::string placementError(const PendingModule& module, size_t index);
   size_t moduleCount() const { return placeAsRead_ ? placed_ : pending_.size(); }

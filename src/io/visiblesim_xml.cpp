@@ -346,11 +346,10 @@ class XmlSceneReader {
         ++placeInFile;
         if (!block.hasColor) module.color = defaultColor;
         if (!block.hasId) module.id = ModuleId{placeInFile};
-        if (!world.isInside(module.cell) || world.moduleAt(module.cell) || world.find(module.id)) {
-          return Error{""};
-        }
-        if (!world.add(module).ok()) return Error{""};
+        // Cells are checked against each other once all are in (World::indexCells).
+        if (!world.addUnindexed(module).ok()) return Error{""};
       }
+      if (world.indexCells()) return Error{""};
     }
     return Ok{};
   }

@@ -147,11 +147,12 @@ class ProgramSource {
   // The program of the module in a slot, or null for a module that runs none. Called for every
   // event: it should be a lookup.
   virtual ModuleProgram* programAt(uint32_t slot) = 0;
-  // Brings what the program of a slot will read into the cache: the simulator calls it for
-  // events a little ahead, so that their programs are not waited for; first for an event further
-  // ahead (`near` false: what can be found without reading memory), then for a nearer one. Only
-  // a hint.
-  virtual void prefetch(uint32_t /*slot*/, bool /*near*/) const {}
+  // Brings what programs will read into the cache: the simulator calls it for events a little
+  // ahead, so that their programs are not waited for. For the slot `far` ahead, what can be found
+  // without reading memory (where the program is kept); for the slot `near` ahead, warmed `far`
+  // some events before, the program itself. Either may be kNoSlot. Only a hint.
+  static constexpr uint32_t kNoSlot = UINT32_MAX;
+  virtual void prefetch(uint32_t /*far*/, uint32_t /*near*/) const {}
 };
 
 }  // namespace datomsim::program

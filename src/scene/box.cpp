@@ -37,6 +37,9 @@ Status addBox(world::World& world, const Cell& size, const Cell& origin, Color c
   world::Module module;
   module.color = color;
   module.orientation = orientation;
+  // A box holds no cell twice: into an empty world its cells are indexed at the end, all at once
+  // in the box they fill (World::addUnindexed).
+  const bool intoEmpty = world.size() == 0;
   for (int32_t z = 0; z < size.z; ++z) {
     const int32_t back =
         upright ? geometry::floorHalf(origin.z + z) - geometry::floorHalf(origin.z) : 0;
@@ -44,10 +47,15 @@ Status addBox(world::World& world, const Cell& size, const Cell& origin, Color c
       for (int32_t x = 0; x < size.x; ++x) {
         module.id = ModuleId{id++};
         module.cell = Cell{origin.x + x - back, origin.y + y - back, origin.z + z};
-        if (Status added = world.add(module); !added) return added;
+        const Status added = intoEmpty ? world.addUnindexed(module) : world.add(module);
+        if (!added) {
+          if (intoEmpty) world.indexCells();
+          return added;
+        }
       }
     }
   }
+  if (intoEmpty) world.indexCells();
   return Ok{};
 }
 

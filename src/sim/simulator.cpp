@@ -279,13 +279,10 @@ Status Simulator::run(Time until) {
     // Events of one time run in the order they were sent, which is no order in memory: warming
     // the caches for one a few places ahead hides most of the wait for its module and program.
     constexpr uint32_t kNear = 6, kFar = 12;
-    if (const uint32_t far = agenda_.upcomingModule(kFar); far != EventQueue::kNoModule) {
-      __builtin_prefetch(&world_.modules()[far]);
-      if (programs_) programs_->prefetch(far, false);
-    }
-    if (const uint32_t near = agenda_.upcomingModule(kNear); near != EventQueue::kNoModule) {
-      if (programs_) programs_->prefetch(near, true);
-    }
+    static_assert(EventQueue::kNoModule == program::ProgramSource::kNoSlot);
+    const uint32_t far = agenda_.upcomingModule(kFar);
+    if (far != EventQueue::kNoModule) __builtin_prefetch(&world_.modules()[far]);
+    if (programs_) programs_->prefetch(far, agenda_.upcomingModule(kNear));
     const Event& event = agenda_.pop();
     current_ = &event;
     mechanics_.clearEvent();

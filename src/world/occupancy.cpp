@@ -170,14 +170,18 @@ void Occupancy::reserveAround(const Occupancy& other, int32_t margin, int32_t lo
   box.nx = near.nx + 4 * margin;
   box.y0 = near.y0 - 2 * margin;
   box.ny = near.ny + 4 * margin;
+  if (box.nz <= 0) return;
+  reserveBox(box, size_t(other.count_));
+}
+
+void Occupancy::reserveBox(const Box& box, size_t count) {
   const int64_t volume = int64_t{box.nx} * box.ny * box.nz;
-  if (box.nz <= 0 ||
-      volume > std::max(kAlwaysDenseSlots, kMaxSlotsPerCell * int64_t(other.count_))) {
+  if (volume <= 0 || volume > std::max(kAlwaysDenseSlots, kMaxSlotsPerCell * int64_t(count))) {
     return;
   }
   dense_.assign(size_t(volume), kEmpty);
   setBox(box);
-  rebuildBits();
+  occupiedBits_.assign((dense_.size() + 63) / 64, 0);
 }
 
 void Occupancy::shrinkToFit() {
@@ -199,6 +203,7 @@ void Occupancy::shrinkToFit() {
   }
   const Box tight{box_.x0 + lo[0],   box_.y0 + lo[1],   box_.z0 + lo[2],
                   hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1};
+  if (tight.nx == box_.nx && tight.ny == box_.ny && tight.nz == box_.nz) return;  // tight already
   std::vector<uint32_t> packed(size_t(tight.nx) * tight.ny * tight.nz);
   for (int32_t z = 0; z < tight.nz; ++z) {
     for (int32_t y = 0; y < tight.ny; ++y) {

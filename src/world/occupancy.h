@@ -6,6 +6,7 @@
 // box would be mostly empty, it switches for good to a flat hash table (cell_index.h).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -52,6 +53,37 @@ class Occupancy {
   // Stores a value (not kEmpty) at a cell, replacing any.
   void insert(const geometry::Cell& cell, uint32_t value);
   void erase(const geometry::Cell& cell);
+  // Makes room, in an empty occupancy, for the cells cellOf(0) .. cellOf(count - 1) in the box they
+  // span, so that inserting them regrows nothing; nothing when they are too scattered for a dense
+  // box (they will go to the hash table as they come).
+  template <typename CellOf>
+  void reserveFor(size_t count, CellOf&& cellOf) {
+    if (count == 0 || count_ > 0 || sparse_) return;
+    const auto gridOf = [&](size_t i) {
+      const geometry::Cell cell = cellOf(i);
+      const int64_t shift = geometry::floorHalf(cell.z);
+      return std::array<int64_t, 3>{cell.x + shift, cell.y + shift, cell.z};
+    };
+    std::array<int64_t, 3> low = gridOf(0);
+    std::array<int64_t, 3> high = low;
+    for (size_t i = 1; i < count; ++i) {
+      const std::array<int64_t, 3> grid = gridOf(i);
+      for (int k = 0; k < 3; ++k) {
+        low[k] = std::min(low[k], grid[k]);
+        high[k] = std::max(high[k], grid[k]);
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (high[k] - low[k] >= INT32_MAX) return;  // far too scattered for a box
+    }
+    const Box box{int32_t(low[0]),
+                  int32_t(low[1]),
+                  int32_t(low[2]),
+                  int32_t(high[0] - low[0] + 1),
+                  int32_t(high[1] - low[1] + 1),
+                  int32_t(high[2] - low[2] + 1)};
+    reserveBox(box, count);
+  }
   // Makes room, in an empty dense occupancy, for every cell within `margin` steps of the box of
   // `other` (no layer below `lowestLayer`), so that filling cells near other's values never
   // regrows the box: an index of the cells around a world's modules. Does nothing when either is
@@ -80,6 +112,8 @@ class Occupancy {
   // Calls f(d, slot) for the slot of each neighbour of `cell` (world direction d) inside the box.
   template <typename F>
   void forEachNeighbourSlot(const geometry::Cell& cell, F&& f) const;
+  // An empty dense box to hold `count` values, unless too large for them.
+  void reserveBox(const Box& box, size_t count);
   // Sets the box, and the slot steps to the neighbours that go with it.
   void setBox(const Box& box);
   void growToInclude(const geometry::Cell& cell);

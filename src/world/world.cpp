@@ -91,7 +91,7 @@ const Module* World::find(ModuleId id) const {
   return index == kNotFound ? nullptr : &modules_[index];
 }
 
-Status World::add(const Module& module) {
+Status World::admit(const Module& module, bool cell) const {
   // Named only on failure: loading a scene adds millions.
   const auto name = [&] { return "module " + std::to_string(module.id.value); };
   if (module.id.value == 0) return Error{"module id 0 is reserved; ids start at 1"};
@@ -104,16 +104,48 @@ Status World::add(const Module& module) {
     return Error{name() + ": cell " + toString(module.cell) + " " +
                  bounds_.whyOutside(module.cell)};
   }
+  if (!cell) return Ok{};
   if (const Module* other = moduleAt(module.cell)) {
     return Error{name() + ": cell " + toString(module.cell) + " is already occupied by module " +
                  std::to_string(other->id.value)};
   }
+  return Ok{};
+}
+
+Status World::add(const Module& module) {
+  if (Status admitted = admit(module, true); !admitted) return admitted;
   const auto index = static_cast<uint32_t>(modules_.size());
   modules_.push_back(module);
   occupancy_.insert(module.cell, index);
   setIndex(module.id, index);
   maxId_ = std::max(maxId_, module.id.value);
   return Ok{};
+}
+
+Status World::addUnindexed(const Module& module) {
+  if (Status admitted = admit(module, false); !admitted) return admitted;
+  const auto index = static_cast<uint32_t>(modules_.size());
+  modules_.push_back(module);
+  setIndex(module.id, index);
+  maxId_ = std::max(maxId_, module.id.value);
+  ++unindexed_;
+  return Ok{};
+}
+
+std::optional<std::pair<uint32_t, uint32_t>> World::indexCells() {
+  const size_t first = modules_.size() - unindexed_;
+  if (first == 0) {
+    occupancy_.reserveFor(modules_.size(), [&](size_t i) { return modules_[i].cell; });
+  }
+  for (size_t i = first; i < modules_.size(); ++i) {
+    const Cell& cell = modules_[i].cell;
+    if (const uint32_t other = occupancy_.find(cell); other != Occupancy::kEmpty) {
+      return std::pair{uint32_t(i), other};
+    }
+    occupancy_.insert(cell, uint32_t(i));
+  }
+  unindexed_ = 0;
+  return std::nullopt;
 }
 
 Status World::remove(ModuleId id) {

@@ -11,6 +11,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "datomsim/result.h"
@@ -35,6 +36,17 @@ class World {
   // Adds a module. Refuses a duplicate id, an id of 0, an occupied cell or a cell outside the
   // world, naming the id and cell. Latches are not changed (see latchAllNeighbours).
   Status add(const Module& module);
+
+  // Loading many modules at once (a scene file, a generated box): add() without indexing the
+  // module's cell, and indexCells() indexes every such module at once, in the box they span,
+  // instead of regrowing the index as they come (each regrowth copies it and touches fresh
+  // memory). Until then the cell lookups (moduleAt and the others) do not see them, and their
+  // cells are not checked against each other; nothing else may change the world meanwhile.
+  Status addUnindexed(const Module& module);
+  // Indexes the cells of the modules added unindexed, in the order they were added. When two
+  // share a cell, returns the positions in modules() of the later one and of the earlier; the
+  // world is then to be dropped.
+  std::optional<std::pair<uint32_t, uint32_t>> indexCells();
 
   // Removes a module and releases its latches (its neighbours' too).
   Status remove(ModuleId id);
@@ -138,6 +150,8 @@ class World {
 
  private:
   size_t slotOf(ModuleId id) const;
+  // add()'s checks in their order; the cell's occupant only when `cell` is set.
+  Status admit(const Module& module, bool cell) const;
   // Sets or clears the latch bits of two modules by their slots, unchecked.
   void writeLatch(size_t a, int connectorA, size_t b, int connectorB, bool latched);
   void setIndex(ModuleId id, uint32_t index);
@@ -151,6 +165,8 @@ class World {
   CellIndex sparseIndexById_;
   bool sparseIds_ = false;
   uint32_t maxId_ = 0;
+  // The last modules of modules_, added unindexed: their cells wait for indexCells().
+  size_t unindexed_ = 0;
 };
 
 template <typename F>

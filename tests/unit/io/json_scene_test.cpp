@@ -249,6 +249,13 @@ TEST(JsonScene, RefusesUnknownAndDuplicateKeys) {
 TEST(JsonScene, RefusesTwoModulesInOneCellNamingBoth) {
   EXPECT_EQ(errorOf(withModules("{\"cell\":[1,1,0]},{\"cell\":[2,1,0]},{\"cell\":[1,1,0]}")),
             "box.json: modules[2].cell: cell 1,1,0 is already occupied by modules[0] (id 1)");
+  // The first error in the file is the one reported, whichever kind comes after it.
+  EXPECT_EQ(
+      errorOf(withModules("{\"cell\":[1,1,0]},{\"cell\":[1,1,0]},{\"id\":1,\"cell\":[3,1,0]}")),
+      "box.json: modules[1].cell: cell 1,1,0 is already occupied by modules[0] (id 1)");
+  EXPECT_EQ(
+      errorOf(withModules("{\"cell\":[1,1,0]},{\"id\":1,\"cell\":[3,1,0]},{\"cell\":[1,1,0]}")),
+      "box.json: modules[1].id: id 1 is already used by modules[0]");
 }
 
 TEST(JsonScene, RefusesADuplicateIdNamingBoth) {

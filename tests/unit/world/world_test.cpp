@@ -35,6 +35,35 @@ TEST(World, RefusesAnOccupiedCellNamingTheOtherModule) {
   EXPECT_NE(status.error().find("already occupied by module 1"), std::string::npos);
 }
 
+TEST(World, ModulesAddedUnindexedAreFoundByCellOnceIndexedAllAtOnce) {
+  World world;
+  for (uint32_t id = 1; id <= 30; ++id) {
+    ASSERT_TRUE(world.addUnindexed(moduleAt(id, {int32_t(id % 6), int32_t(id / 6), 0})).ok());
+  }
+  EXPECT_EQ(world.moduleAt({1, 0, 0}), nullptr);  // not indexed yet
+  EXPECT_EQ(world.find(ModuleId{7})->cell, (Cell{1, 1, 0}));
+  EXPECT_FALSE(world.indexCells().has_value());
+  for (uint32_t id = 1; id <= 30; ++id) {
+    EXPECT_EQ(world.moduleAt({int32_t(id % 6), int32_t(id / 6), 0})->id, ModuleId{id});
+  }
+  // Later modules join the index as add() puts them, and still refuse a taken cell.
+  EXPECT_TRUE(world.add(moduleAt(31, {9, 9, 0})).ok());
+  EXPECT_FALSE(world.add(moduleAt(32, {2, 0, 0})).ok());
+}
+
+TEST(World, IndexingCellsAddedUnindexedFindsTwoInOneCell) {
+  World world;
+  ASSERT_TRUE(world.addUnindexed(moduleAt(1, {0, 0, 0})).ok());
+  ASSERT_TRUE(world.addUnindexed(moduleAt(2, {1, 0, 0})).ok());
+  ASSERT_TRUE(world.addUnindexed(moduleAt(3, {0, 0, 0})).ok());  // not checked yet
+  const auto clash = world.indexCells();
+  ASSERT_TRUE(clash.has_value());
+  EXPECT_EQ(clash->first, 2u);   // the later one, by its place in modules()
+  EXPECT_EQ(clash->second, 0u);  // the earlier one
+  // What is checked without the cells still is: ids.
+  EXPECT_FALSE(world.addUnindexed(moduleAt(2, {5, 5, 0})).ok());
+}
+
 TEST(World, RefusesADuplicateIdAndIdZero) {
   World world;
   ASSERT_TRUE(world.add(moduleAt(1, {0, 0, 0})).ok());

@@ -195,7 +195,7 @@ def table(bench, large):
                 cells.append("")
                 continue
             seconds, peak = results[(label, box)]
-            memory = f"{megabytes(peak) / 1024:.1f} GB" if peak > 4 * 1024 * 1024 else f"{megabytes(peak):.0f} MB"
+            memory = f"{megabytes(peak) / 1024:.1f} GB" if peak > 1024 * 1024 else f"{megabytes(peak):.0f} MB"
             cells.append(f"{seconds:.2f} s, {memory}")
         print(f"| `{label}` | " + " | ".join(cells) + " |")
 

@@ -155,7 +155,9 @@ class FastReader {
     bool inString = false;
     for (;;) {
       const int c = bytes_.peek();
-      if (c == ByteSource::kEnd) return false;
+      // nlohmann's parser takes a NUL for the end of its input: in a value's text alone it would
+      // end the value where the whole document's parse fails.
+      if (c == ByteSource::kEnd || c == '\0') return false;
       if (inString) {
         bytes_.skip();
         into.push_back(char(c));

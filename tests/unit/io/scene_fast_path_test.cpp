@@ -121,6 +121,10 @@ TEST(JsonFastPath, DeclinesWhatItDoesNotReadAndTheGeneralReaderWordsIt) {
       R"({"format":"datomsim-scene","version":1,"modules":[{"cell":[99999999999999999999,0,0]}]})",
       "\xEF\xBB\xBF"
       R"({"format":"datomsim-scene","version":1,"modules":[]})",
+      // A NUL after a value, which nlohmann's parser takes for the end of the input.
+      std::string(R"({"format":"datomsim-scene","version":1,"grid":null)") + '\0' + "\xFF}",
+      std::string(R"({"format":"datomsim-scene","version":1,"name":"a")") + '\0' + ',' +
+          R"("modules":[]})",
   };
   for (const std::string& text : documents) {
     EXPECT_FALSE(detail::readJsonSceneFast(text, "s.json").has_value()) << text;

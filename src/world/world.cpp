@@ -114,22 +114,23 @@ Status World::admit(const Module& module, bool cell) const {
 
 Status World::add(const Module& module) {
   if (Status admitted = admit(module, true); !admitted) return admitted;
-  const auto index = static_cast<uint32_t>(modules_.size());
-  modules_.push_back(module);
-  occupancy_.insert(module.cell, index);
-  setIndex(module.id, index);
-  maxId_ = std::max(maxId_, module.id.value);
+  occupancy_.insert(module.cell, append(module));
   return Ok{};
 }
 
 Status World::addUnindexed(const Module& module) {
   if (Status admitted = admit(module, false); !admitted) return admitted;
+  append(module);
+  ++unindexed_;
+  return Ok{};
+}
+
+uint32_t World::append(const Module& module) {
   const auto index = static_cast<uint32_t>(modules_.size());
   modules_.push_back(module);
   setIndex(module.id, index);
   maxId_ = std::max(maxId_, module.id.value);
-  ++unindexed_;
-  return Ok{};
+  return index;
 }
 
 std::optional<std::pair<uint32_t, uint32_t>> World::indexCells() {
@@ -140,6 +141,7 @@ std::optional<std::pair<uint32_t, uint32_t>> World::indexCells() {
   for (size_t i = first; i < modules_.size(); ++i) {
     const Cell& cell = modules_[i].cell;
     if (const uint32_t other = occupancy_.find(cell); other != Occupancy::kEmpty) {
+      unindexed_ = modules_.size() - i;  // asked again, the same answer
       return std::pair{uint32_t(i), other};
     }
     occupancy_.insert(cell, uint32_t(i));

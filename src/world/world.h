@@ -44,8 +44,8 @@ class World {
   // cells are not checked against each other; nothing else may change the world meanwhile.
   Status addUnindexed(const Module& module);
   // Indexes the cells of the modules added unindexed, in the order they were added. When two
-  // share a cell, returns the positions in modules() of the later one and of the earlier; the
-  // world is then to be dropped.
+  // share a cell, returns the positions in modules() of the later one and of the earlier (the
+  // same again if asked again); the world is then to be dropped.
   std::optional<std::pair<uint32_t, uint32_t>> indexCells();
 
   // Removes a module and releases its latches (its neighbours' too).
@@ -152,6 +152,8 @@ class World {
   size_t slotOf(ModuleId id) const;
   // add()'s checks in their order; the cell's occupant only when `cell` is set.
   Status admit(const Module& module, bool cell) const;
+  // Puts an admitted module at the end of modules() and indexes its id; returns its position.
+  uint32_t append(const Module& module);
   // Sets or clears the latch bits of two modules by their slots, unchecked.
   void writeLatch(size_t a, int connectorA, size_t b, int connectorB, bool latched);
   void setIndex(ModuleId id, uint32_t index);

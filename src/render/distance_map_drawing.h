@@ -63,6 +63,29 @@ class SvgCellPainter : public CellPainter {
   std::vector<std::string> elements_;
 };
 
+// The path's marks, which the legend shows too (distance_map_path.cpp): the line with a dot per
+// step, the rings at the start and the goal, and the layer tags.
+void drawPathLine(cairo_t* cr, const std::vector<PixelPoint>& points, double ppc);
+void drawStartMarker(cairo_t* cr, PixelPoint at, double ppc);
+void drawGoalMarker(cairo_t* cr, PixelPoint at, double ppc);
+// A layer tag ("z=3"): the text in a white box with a red border.
+struct LayerTag {
+  std::string text;
+  double width = 0;
+  double height = 0;
+  double padding = 0;
+  double ascent = 0;
+};
+LayerTag measureLayerTag(cairo_t* cr, std::string text, double fontSize);
+// Draws a measured tag with its top-left corner at (x, y), rounded to whole pixels.
+void drawLayerTag(cairo_t* cr, const LayerTag& tag, double x, double y);
+
+// The path with its start and goal rings and layer tags.
+void drawPath(cairo_t* cr, const Scene& scene, const DistanceMapPicture& picture,
+              const DistanceMapLayout& layout);
+// A diamond around a cell's square (DistanceMapPicture::marked).
+void drawMarkedCell(cairo_t* cr, PixelPoint at, double ppc);
+
 // Paints the whole picture: white background, title, axes, modules, distances, path, legend.
 void draw(cairo_t* cr, const Scene& scene, const DistanceMapPicture& picture,
           const DistanceMapLayout& layout, CellPainter& painter);

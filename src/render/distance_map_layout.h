@@ -101,7 +101,12 @@ struct Scene {
   std::string summary;  // the second line of the title
 };
 
-// Checks the picture (see layoutDistanceMap) and sorts its content for drawing.
+// The scales a picture may ask for, in pixels per cell.
+inline constexpr int kMinPixelsPerCell = 2;
+inline constexpr int kMaxPixelsPerCell = 256;
+
+// Checks the picture (see layoutDistanceMap) and sorts its content for drawing
+// (distance_map_scene.cpp).
 Result<Scene> prepare(const DistanceMapPicture& picture);
 
 // Where everything of a prepared picture goes.

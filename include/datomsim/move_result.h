@@ -20,9 +20,9 @@ struct MoveRefusal {
     kInvalidRequest,   // the request names no rule, or starts elsewhere than the module is
     kNotAtRest,        // the mobile or its pivot has a piston away from rest or is busy
     kRule,             // the rule does not hold on the world as it is now
-    kBlockerNotReady,  // a module of the deformation list has not compressed its piston
+    kHelperNotReady,   // a helper (Motion::helpers) has not compressed its piston
     kCellReserved,     // a cell the motion needs is reserved by a motion in progress
-    kModuleBusy,       // the pivot or a blocking module serves a motion in progress
+    kModuleBusy,       // the pivot or a helper serves a motion in progress
     kWouldDisconnect,  // connectivity on: some modules would be cut off from the ensemble
   };
   static constexpr int kReasonCount = 7;
@@ -72,8 +72,8 @@ inline std::string_view toString(MoveRefusal::Reason reason) {
       return "not-at-rest";
     case MoveRefusal::Reason::kRule:
       return "rule";
-    case MoveRefusal::Reason::kBlockerNotReady:
-      return "blocker-not-ready";
+    case MoveRefusal::Reason::kHelperNotReady:
+      return "blocker-not-ready";  // the name outputs have always carried
     case MoveRefusal::Reason::kCellReserved:
       return "cell-reserved";
     case MoveRefusal::Reason::kModuleBusy:

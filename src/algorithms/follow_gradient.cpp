@@ -8,6 +8,11 @@ namespace datomsim::algorithms {
 
 using geometry::Cell;
 
+namespace {
+// Paper, Algorithm 1: a helper serves one motion at a time.
+constexpr HelperDuty::Terms kPaperTerms{.oneMotion = true};
+}  // namespace
+
 void FollowGradientProgram::onTimer(program::ModuleContext& context, int tag) {
   GradientProgram::onTimer(context, tag);
   if (tag != kFollowTrigger || !isMobile(context) || phase() != Phase::kIdle) return;
@@ -63,34 +68,22 @@ void FollowGradientProgram::choose(program::ModuleContext& context) {
   }
   walk_->chosen = walk_->candidates[best];
   walk_->phase = Phase::kDeforming;
-  walk_->waitingAcks = sendToBlockingModules<DeformMsg>(context);
-  if (walk_->waitingAcks == 0) {
-    walk_->phase = Phase::kMoving;
-    const MoveResult moving = context.move(*walk_->chosen);
-    if (!moving.ok()) fail(moving.error());
-  }
+  recordFailure(
+      walk_->helpers.ask(context, router_, *walk_->chosen, [&] { return walk_->nextRequest++; }));
+  if (walk_->helpers.size() == 0) move(context);
 }
 
-template <typename T>
-int FollowGradientProgram::sendToBlockingModules(program::ModuleContext& context) {
-  int sent = 0;
-  for (const motion::Deformation& d : walk_->chosen->deformations) {
-    T message;
-    message.target = d.cell;
-    message.origin = context.cell();
-    message.request = walk_->nextRequest++;
-    message.axis = d.firstAxis;
-    recordFailure(router_.send(context, message));
-    ++sent;
-  }
-  return sent;
+void FollowGradientProgram::move(program::ModuleContext& context) {
+  walk_->phase = Phase::kMoving;
+  const MoveResult moving = context.move(*walk_->chosen);
+  if (!moving.ok()) fail(moving.error());
 }
 
 void FollowGradientProgram::onMotionDone(program::ModuleContext& context) {
   walk_->path.push_back(context.cell());
   walk_->phase = Phase::kReleasing;
-  walk_->waitingAcks = sendToBlockingModules<ReleaseMsg>(context);
-  if (walk_->waitingAcks == 0) step(context);
+  recordFailure(walk_->helpers.letGo(context, router_));
+  if (walk_->helpers.size() == 0) step(context);
 }
 
 void FollowGradientProgram::onMessage(program::ModuleContext& context, int ownConnector,
@@ -130,43 +123,29 @@ void FollowGradientProgram::onMessage(program::ModuleContext& context, int ownCo
   GradientProgram::onMessage(context, ownConnector, message);
 }
 
+HelperDuty& FollowGradientProgram::duty() {
+  if (!duty_) duty_ = std::make_unique<HelperDuty>(kPaperTerms);
+  return *duty_;
+}
+
 void FollowGradientProgram::handleRouted(program::ModuleContext& context, const RoutedMsg& routed,
                                          std::string_view type) {
   if (type == DeformMsg::kName) {
-    // Paper, Algorithm 1, DeformMsg handler: compress, answer when done.
-    pending_ = routed;
-    releasing_ = false;
-    const Status status = context.compress(context.orientation().ownPiston(routed.axis));
+    const Status status = duty().onDeformRequest(context, router_, routed, false);
     if (!status.ok()) fail(status.error());
   } else if (type == ReleaseMsg::kName) {
-    pending_ = routed;
-    releasing_ = true;
-    const Status status = context.release();
+    const Status status = duty().onReleaseRequest(context, router_, routed);
     if (!status.ok()) fail(status.error());
   } else if (type == AckDeform::kName && phase() == Phase::kDeforming) {
-    // Algorithm 1, AckDeform handler: move once every blocking module has answered.
-    if (--walk_->waitingAcks == 0) {
-      walk_->phase = Phase::kMoving;
-      const MoveResult moving = context.move(*walk_->chosen);
-      if (!moving.ok()) fail(moving.error());
-    }
+    // Algorithm 1, AckDeform handler: move once every helper has answered.
+    if (walk_->helpers.hear(routed, true) == MotionHelpers::Answers::kGranted) move(context);
   } else if (type == AckRelease::kName && phase() == Phase::kReleasing) {
-    if (--walk_->waitingAcks == 0) step(context);
+    if (walk_->helpers.released()) step(context);
   }
 }
 
 void FollowGradientProgram::onDeformationDone(program::ModuleContext& context) {
-  if (!pending_) return;
-  RoutedMsg answer;
-  answer.target = pending_->origin;
-  answer.origin = context.cell();
-  answer.request = pending_->request;
-  if (releasing_) {
-    recordFailure(router_.send(context, AckRelease{answer}));
-  } else {
-    recordFailure(router_.send(context, AckDeform{answer}));
-  }
-  pending_.reset();
+  if (duty_) recordFailure(duty_->onDeformationDone(context, router_, false));
 }
 
 const std::vector<Cell>& FollowGradientProgram::path() const {
@@ -184,11 +163,11 @@ std::string FollowGradientProgram::describeWait() const {
     case Phase::kAsking:
       return fmt::format("{} it waits for {} DistanceReply", at, walk_->waitingReplies);
     case Phase::kDeforming:
-      return fmt::format("{} it waits for {} AckDeform", at, walk_->waitingAcks);
+      return fmt::format("{} it waits for {} AckDeform", at, walk_->helpers.waiting());
     case Phase::kMoving:
       return fmt::format("{} its motion never ended", at);
     case Phase::kReleasing:
-      return fmt::format("{} it waits for {} AckRelease", at, walk_->waitingAcks);
+      return fmt::format("{} it waits for {} AckRelease", at, walk_->helpers.waiting());
     case Phase::kDone:
       return fmt::format("{} it stopped", at);
   }

@@ -5,11 +5,9 @@
 //   1. list its valid rules (getAllValidRules) and ask each rule's pivot, a latched neighbour,
 //      for the distance of the rule's goal (DistanceQuery / DistanceReply);
 //   2. pick the goal of smallest distance, ties to the first rule in table order;
-//   3. send DeformMsg(piston) to every module of the rule's deformation list and wait for every
-//      AckDeform;
-//   4. move; when the motion ends, send ReleaseMsg to the same modules and wait for every
-//      AckRelease.
-// Deformation messages travel hop by hop between latched neighbours (routing.h).
+//   3. ask the rule's helpers to compress (DeformMsg) and wait for every AckDeform;
+//   4. move; when the motion ends, let the helpers go (ReleaseMsg) and wait for every AckRelease.
+// Steps 3 and 4 are the helpers' protocol (helpers.h), on the paper's terms: one motion at a time.
 #pragma once
 
 #include <memory>
@@ -17,6 +15,7 @@
 #include <vector>
 
 #include "algorithms/gradient.h"
+#include "algorithms/helpers.h"
 #include "motion/motion_values.h"
 
 namespace datomsim::algorithms {
@@ -58,12 +57,11 @@ class FollowGradientProgram : public GradientProgram {
   // The mobile's side.
   void step(program::ModuleContext& context);
   void choose(program::ModuleContext& context);
+  void move(program::ModuleContext& context);
   void fail(const std::string& why);
-  // Sends one routed message per module of the chosen rule's deformation list.
-  template <typename T>
-  int sendToBlockingModules(program::ModuleContext& context);
 
-  // A blocking module's side.
+  // A helper's side, made on its first request (most modules are never asked).
+  HelperDuty& duty();
   void handleRouted(program::ModuleContext& context, const RoutedMsg& routed,
                     std::string_view type);
 
@@ -77,15 +75,13 @@ class FollowGradientProgram : public GradientProgram {
     std::vector<int32_t> candidateDistances;
     int waitingReplies = 0;
     std::optional<motion::Motion> chosen;
-    int waitingAcks = 0;
+    MotionHelpers helpers;
     uint32_t nextRequest = 1;
     std::vector<geometry::Cell> path;
     bool arrived = false;
   };
   std::unique_ptr<Walk> walk_;
-  // Blocking module state: who asked, to answer once the piston is done.
-  std::optional<RoutedMsg> pending_;
-  bool releasing_ = false;
+  std::unique_ptr<HelperDuty> duty_;
 };
 
 }  // namespace datomsim::algorithms

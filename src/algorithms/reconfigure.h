@@ -16,14 +16,14 @@
 //     of the gradient at the next period of simulated time; a version floods the ensemble, and
 //     every module forgets the old distances and seeds the open cells it senses now.
 //   - A mover asks the pivots of its valid motions for the distance of each goal, takes the
-//     smallest of the newest version (a settled pivot first), asks the modules of its deformation
-//     list to compress (they may refuse: busy with another piston, in a motion of their own, or
-//     the engine refuses), moves, and lets them go. Any refusal, of a helper or of the engine (a
-//     reservation, connectivity), makes it let go of its helpers and try again after a random
+//     smallest of the newest version (a settled pivot first), asks the motion's helpers to
+//     compress (helpers.h; they may refuse: busy with another piston, in a motion of their own,
+//     or the engine refuses), moves, and lets them go. Any refusal, of a helper or of the engine
+//     (a reservation, connectivity), makes it let go of its helpers and try again after a random
 //     wait, from its own random stream; a goal that failed weighs more the next time.
 //   - On an open cell, a mover asks the modules of the cells to fill before it whether they stay
 //     (a mover passing through looks the same to the senses), and settles when they all do.
-//   - A module asked to compress for several motions with the same piston holds it until the last
+//   - A helper asked to compress for several motions with the same piston holds it until the last
 //     lets go, or its lease lapses.
 //   - A pocket (an open cell walled in on its layer, which no mover can enter) is filled by a
 //     settled module next to it, which leaves a hole that movers reach.
@@ -34,36 +34,15 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
+#include "algorithms/helpers.h"
 #include "algorithms/routing.h"
+#include "algorithms/target_shape.h"
 #include "geometry/cell.h"
 #include "program/module_program.h"
 
 namespace datomsim::algorithms {
-
-// The target's cells, shared by every module's program; never changes during a run. Each cell has
-// a rank in the order of filling within its layer: the squared distance of its centre from the
-// centre of the layer's target cells, so that a layer fills from the inside out and its open
-// cells always lie on the edge of what is filled, where movers come from.
-class TargetShape {
- public:
-  explicit TargetShape(const std::vector<geometry::Cell>& cells);
-  bool contains(const geometry::Cell& cell) const { return cells_.count(cell) > 0; }
-  // The cell's rank; precondition: contains(cell).
-  double rank(const geometry::Cell& cell) const { return cells_.at(cell); }
-  size_t size() const { return cells_.size(); }
-
- private:
-  struct Hash {
-    size_t operator()(const geometry::Cell& c) const {
-      return (size_t(uint32_t(c.x)) * 73856093u) ^ (size_t(uint32_t(c.y)) * 19349663u) ^
-             (size_t(uint32_t(c.z)) * 83492791u);
-    }
-  };
-  std::unordered_map<geometry::Cell, double, Hash> cells_;
-};
 
 // A new version of the gradient, flooded through latches.
 struct GradientVersion {
@@ -111,16 +90,6 @@ struct SettledReply {
   bool settled;
 };
 
-// A mover whose motion waits in the run's queue keeps its helpers' grants alive.
-struct RenewMsg : RoutedMsg {
-  static constexpr std::string_view kName = "RenewMsg";
-};
-
-// A module asked to compress cannot (busy, or refused by the engine).
-struct NackDeform : RoutedMsg {
-  static constexpr std::string_view kName = "NackDeform";
-};
-
 class ReconfigureProgram : public program::ModuleProgram {
  public:
   static constexpr int32_t kUnknown = INT32_MAX;
@@ -146,21 +115,55 @@ class ReconfigureProgram : public program::ModuleProgram {
  private:
   enum class Phase { kIdle, kWaiting, kAsking, kConfirming, kDeforming, kMoving, kReleasing };
 
-  // The gradient.
+  // Timer tags. From kWatchdog on: a mover's watchdog for one round of asking, deforming or
+  // releasing.
+  static constexpr int kStep = 1;
+  static constexpr int kReleaseAgain = 2;
+  static constexpr int kLease = 3;
+  static constexpr int kNewVersion = 4;
+  static constexpr int kRenew = 5;
+  static constexpr int kSpread = 6;
+  static constexpr int kWatchdog = 1000;
+  // How long a helper holds a piston for a motion that does not come: the mover may have given up.
+  static constexpr Time kLeaseTime = 60 * kSecond;
+  static constexpr HelperDuty::Terms kHelperTerms{.oneMotion = false,
+                                                  .lease = kLeaseTime,
+                                                  .leaseTimer = kLease,
+                                                  .releaseAgainTimer = kReleaseAgain};
+  static constexpr Color kMoving{255, 160, 32};
+  static constexpr Color kSettled{96, 160, 255};
+  // How long a mover waits for answers before it gives a round up.
+  static constexpr Time kPatience = 3 * kSecond;
+  // Versions of the gradient are numbered by period of simulated time: every module that fills a
+  // cell during a period asks for the version of the next one, at its start, so that one flood
+  // carries the fills of a whole period (docs/reconfiguration.md).
+  static constexpr Time kVersionPeriod = 20 * 1000 * kMillisecond;
+  static uint64_t nextVersion(Time now) { return uint64_t(now / kVersionPeriod) + 1; }
+  // A distance found is told this much later, with what has improved meanwhile.
+  static constexpr Time kSpreadDelay = 30 * kMillisecond;
+  // How many motions farther an open cell looks for each layer up.
+  static constexpr int32_t kLayerBias = 3;
+
+  // The gradient (reconfigure_gradient.cpp).
   void adopt(program::ModuleContext& context, uint64_t version);
   void seedOpenCells(program::ModuleContext& context);
   void learn(program::ModuleContext& context, int direction, int32_t distance);
   void spread(program::ModuleContext& context, const geometry::Cell& cell, int32_t distance);
+  void spreadFound(program::ModuleContext& context);
   // Whether a target cell may be filled now: empty (or held by this module, for its own cell),
   // some module under it, every target cell under it filled, and every target cell of its layer
   // next to it and nearer the layer's centre filled.
   bool isOpen(program::ModuleContext& context, const geometry::Cell& cell) const;
 
+  // Settling and pockets (reconfigure_settling.cpp). On an open cell: settles once the modules of
+  // the cells to be filled before it say they stay.
+  void confirm(program::ModuleContext& context);
+  void settle(program::ModuleContext& context);
   // A settled module next to a pocket that it can fill leaves its cell for it.
   void repairPocket(program::ModuleContext& context);
   void stepIntoPocket(program::ModuleContext& context);
 
-  // The mover.
+  // The mover (reconfigure_mover.cpp).
   void watch(program::ModuleContext& context);
   void onWatchdog(program::ModuleContext& context, uint32_t round);
   void step(program::ModuleContext& context);
@@ -171,20 +174,15 @@ class ReconfigureProgram : public program::ModuleProgram {
   void attemptFailed();
   // A candidate's distance with the failures at its goal counted against it.
   int64_t effective(int candidate) const;
+  // A helper's AckDeform or NackDeform.
+  void onHelperAnswer(program::ModuleContext& context, const RoutedMsg& answer, bool granted);
+  void move(program::ModuleContext& context);
   void releaseHelpers(program::ModuleContext& context);
   void afterRelease(program::ModuleContext& context);
-  // On an open cell: settles once the modules of the cells to be filled before it say they stay.
-  void confirm(program::ModuleContext& context);
-  void settle(program::ModuleContext& context);
-  template <typename T>
-  void sendToHelpers(program::ModuleContext& context, bool releasing);
-
-  // A helper's side.
-  void onDeformRequest(program::ModuleContext& context, const RoutedMsg& request);
-  void onReleaseRequest(program::ModuleContext& context, const RoutedMsg& request);
-  void renew(program::ModuleContext& context, const RoutedMsg& request);
-  void answer(program::ModuleContext& context, const RoutedMsg& request, bool granted);
-  void grant(program::ModuleContext& context, const RoutedMsg& request);
+  // Whether this module holds a piston for another's motion, or is moving one.
+  bool makingWay() const { return helping_.makingWay(); }
+  // Whether this module is busy with a motion of its own: it makes way for nobody.
+  bool busy() const { return phase_ == Phase::kDeforming || phase_ == Phase::kMoving; }
   void note(const Status& status);
 
   std::shared_ptr<const TargetShape> target_;
@@ -207,12 +205,7 @@ class ReconfigureProgram : public program::ModuleProgram {
   std::optional<motion::Motion> chosen_;
   int32_t chosenDistance_ = kUnknown;
   uint64_t chosenVersion_ = 0;
-  // By helper, in the chosen motion's deformation list: the request sent, answered, granted.
-  std::vector<uint32_t> requests_;
-  std::vector<bool> answered_;
-  std::vector<bool> acknowledged_;
-  int waitingAnswers_ = 0;
-  bool refusedByHelper_ = false;
+  MotionHelpers helpers_;  // the chosen motion's
   bool retryAfterRelease_ = false;
   bool unsettledAround_ = false;  // a confirmation heard of a mover in a cell to fill first
   int motions_ = 0;
@@ -229,19 +222,8 @@ class ReconfigureProgram : public program::ModuleProgram {
   uint32_t round_ = 0;
   int lostReplies_ = 0;  // replies to movers that had moved on
 
-  // Helper state: the piston held, the motions it is held for (each until its lease lapses), and
-  // who waits for it.
-  struct Grant {
-    uint32_t request;  // the mover's request number, unique to the mover
-    Time until;
-  };
-  int heldAxis_ = -1;
-  int holders_ = 0;
-  std::vector<Grant> grants_;
-  bool compressing_ = false;
-  bool releasing_ = false;
-  std::vector<RoutedMsg> waitingForPiston_;
-  std::vector<RoutedMsg> waitingForRest_;  // asked while its piston was on its way back
+  // This module's side as a helper of others' motions.
+  HelperDuty helping_{kHelperTerms};
   std::optional<std::string> failure_;
 };
 

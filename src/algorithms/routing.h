@@ -1,9 +1,9 @@
 // Messages for a module that is not a neighbour, carried hop by hop between latched neighbours.
 //
-// Deformation requests of Algorithm 1 go from the mobile to modules up to two cells away. Each
+// Requests of Algorithm 1 go from the mobile to its helpers, up to two cells away (helpers.h). Each
 // hop forwards the message through the latched connector whose neighbour is nearest to the
 // target cell, if nearer than itself (greedy geographic routing). Where no neighbour is nearer
-// (typically: a blocking module has just retracted the connector that faced the mobile), it
+// (typically: a helper has just retracted the connector that faced the mobile), it
 // floods to its latched neighbours, each module forwarding a given message once, within a hop
 // limit and within a ball around the target one cell wider than where greedy stalled: the detour
 // is local, and a flood that roamed the whole ensemble would cost a message per latch.
@@ -24,26 +24,13 @@ struct RoutedMsg {
   geometry::Cell target;
   geometry::Cell origin;  // where the answer goes
   uint32_t request = 0;   // the origin's request number
-  int8_t axis = -1;       // a world piston axis, for DeformMsg
+  int8_t axis = -1;       // a world piston axis, for a helper's DeformMsg
   int8_t hopsLeft = 0;    // for flooding; kGreedyOnly: dropped where greedy routing stalls
   // While flooding, the farthest a copy may be from the target (squaredDistance4); 0: greedy.
   // 16 bits keep the routed messages with the most payload within a message's capacity.
   uint16_t floodBound = 0;
 
   bool flooding() const { return floodBound > 0; }
-};
-
-struct DeformMsg : RoutedMsg {
-  static constexpr std::string_view kName = "DeformMsg";
-};
-struct AckDeform : RoutedMsg {
-  static constexpr std::string_view kName = "AckDeform";
-};
-struct ReleaseMsg : RoutedMsg {
-  static constexpr std::string_view kName = "ReleaseMsg";
-};
-struct AckRelease : RoutedMsg {
-  static constexpr std::string_view kName = "AckRelease";
 };
 
 // A routed message that never floods: cheap, for information that may be lost (a distance some

@@ -93,11 +93,11 @@ class ModuleContext {
                            uint16_t wanted = kAllDirections) const = 0;
   static constexpr uint16_t kAllDirections = 0xFFF;
 
-  // Asks for a motion. The simulator judges it at once: the rule must still hold, every module of
-  // its deformation list must have compressed its piston, and nothing it needs may be reserved by
-  // a motion in progress (docs/simulation.md). Then it starts, or waits in the queue when the run
-  // limits concurrent motions; otherwise the refusal says why and who holds what. The program
-  // hears of the end through onMotionDone, or of a queued request refused later through
+  // Asks for a motion. The simulator judges it at once: the rule must still hold, every helper
+  // (the modules of its deformation list) must have compressed its piston, and nothing it needs may
+  // be reserved by a motion in progress (docs/simulation.md). Then it starts, or waits in the queue
+  // when the run limits concurrent motions; otherwise the refusal says why and who holds what. The
+  // program hears of the end through onMotionDone, or of a queued request refused later through
   // onMotionRefused.
   virtual MoveResult move(const motion::Motion& motion) = 0;
 

@@ -21,17 +21,17 @@ std::optional<std::string> checkMotion(const world::World& world, const Mechanic
       !(mobile.latches & (1u << active.mobileConnector()))) {
     return fmt::format("mobile {} is not latched to its pivot {}", mobile.id.value, pivot.id.value);
   }
-  // The path stays clear: every deforming module keeps the piston its rule asks for, and holds
+  // The path stays clear: every helper keeps the piston its rule asks for, and holds
   // to the ensemble with the piston it has compressed now.
   std::vector<motion::Deformation> holding;
   for (const motion::Deformation& d : active.plan.deformations) {
     const uint32_t index = *world.indexOf(d.module);
     const Mechanics::Pistons& pistons = mechanics.pistons(index);
-    const Module& blocker = world.modules()[index];
+    const Module& helper = world.modules()[index];
     const bool switching = d.secondAxis >= 0 && active.switched && !active.resumed;
     const int axis = d.secondAxis >= 0 && active.resumed ? d.secondAxis : d.firstAxis;
     if (!switching && (pistons.piston < 0 || pistons.phase == Mechanics::Phase::kReleasing ||
-                       blocker.orientation.worldAxis(pistons.piston) != axis)) {
+                       helper.orientation.worldAxis(pistons.piston) != axis)) {
       return fmt::format(
           "module {} in cell {} {} let go of its piston along axis {} while mobile {} passes",
           d.module.value, motion::toString(d.role), geometry::toString(d.cell), axis,
@@ -39,7 +39,7 @@ std::optional<std::string> checkMotion(const world::World& world, const Mechanic
     }
     if (pistons.piston >= 0) {
       motion::Deformation now = d;
-      now.firstAxis = static_cast<int8_t>(blocker.orientation.worldAxis(pistons.piston));
+      now.firstAxis = static_cast<int8_t>(helper.orientation.worldAxis(pistons.piston));
       now.secondAxis = -1;
       holding.push_back(now);
     }

@@ -4,9 +4,9 @@
 //   - no module whose pistons changed in this event has two pistons away from rest (paper,
 //     section III.B);
 //   - each mobile in motion is latched to its pivot (the paper's central claim);
-//   - every module of a motion's deformation list keeps the piston its rule needs while the
-//     mobile passes (releasing early is a violation, not a refusal), and stays attached to the
-//     ensemble by the paper's rule and the group rule;
+//   - every helper of a motion (the modules of its deformation list) keeps the piston its rule
+//     needs while the mobile passes (releasing early is a violation, not a refusal), and stays
+//     attached to the ensemble by the paper's rule and the group rule;
 //   - no module arrives in a cell reserved by another motion, and a cell holds one module;
 //   - with connectivity on, no latch broken in this event has split a piece of the ensemble.
 // An event that changed no piston, latch or cell (a message, say) cannot break any of them; the

@@ -242,7 +242,7 @@ MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& reques
     if (pistons.phase != Mechanics::Phase::kCompressed ||
         world_.modules()[other].orientation.worldAxis(pistons.piston) != d.firstAxis) {
       MoveRefusal refused = refusal(
-          MoveRefusal::Reason::kBlockerNotReady,
+          MoveRefusal::Reason::kHelperNotReady,
           fmt::format("module {} in cell {} {} must compress its piston along world axis {} first",
                       d.module.value, motion::toString(d.role), geometry::toString(d.cell),
                       d.firstAxis));

@@ -45,7 +45,7 @@ struct PistonMove {
 };
 
 // A motion's mobile starts to move around its pivot; `plan` holds the rule, the cells and the
-// deformation list; the motion ends at `until` and holds what it needs till then.
+// helpers (its deformation list); the motion ends at `until` and holds what it needs till then.
 struct MotionStart {
   ModuleId mobile;
   ModuleId pivot;

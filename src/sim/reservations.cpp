@@ -22,7 +22,7 @@ Claim claimOf(const world::World& world, const motion::Motion& motion, uint32_t 
     if (!world.moduleAt(cell)) claim.cells.push_back(cell);
   }
   for (const motion::Deformation& d : motion.deformations) {
-    claim.blockers.push_back({*world.indexOf(d.module), d.firstAxis, d.secondAxis >= 0});
+    claim.helpers.push_back({*world.indexOf(d.module), d.firstAxis, d.secondAxis >= 0});
   }
   return claim;
 }
@@ -49,9 +49,9 @@ std::optional<std::pair<Reservations::Holder, std::string_view>> Reservations::h
                                                                          : "blocking module"};
 }
 
-std::optional<Reservations::Holder> Reservations::blockerHolder(uint32_t module) const {
+std::optional<Reservations::Holder> Reservations::helperHolder(uint32_t module) const {
   const auto found = modules_.find(module);
-  if (found == modules_.end() || found->second.role != Role::kBlocker) return std::nullopt;
+  if (found == modules_.end() || found->second.role != Role::kHelper) return std::nullopt;
   // The one that holds it longest: the piston may go only when every sharer is done.
   return *std::max_element(found->second.holders.begin(), found->second.holders.end(),
                            [](const Holder& a, const Holder& b) { return a.until < b.until; });
@@ -95,25 +95,25 @@ std::optional<MoveRefusal> Reservations::conflict(const world::World& world,
     refused.cell = module.cell;
     return refused;
   }
-  // A blocking module is shared only for the same single axis.
-  for (const Claim::Blocker& blocker : claim.blockers) {
-    const auto found = modules_.find(blocker.module);
+  // A helper is shared only for the same single axis.
+  for (const Claim::Helper& helper : claim.helpers) {
+    const auto found = modules_.find(helper.module);
     if (found == modules_.end()) continue;
     const ModuleHold& hold = found->second;
     const Holder& holder = hold.holders.front();
-    const world::Module& module = world.modules()[blocker.module];
+    const world::Module& module = world.modules()[helper.module];
     std::string why;
-    if (hold.role != Role::kBlocker) {
+    if (hold.role != Role::kHelper) {
       why = fmt::format("module {} in cell {} is the {} of the motion of module {} ({})",
                         module.id.value, geometry::toString(module.cell), roleName(hold.role),
                         holder.mobile.value, untilText(holder.until));
-    } else if (hold.axis != blocker.axis || hold.double_ || blocker.double_) {
+    } else if (hold.axis != helper.axis || hold.double_ || helper.double_) {
       why = fmt::format(
           "module {} in cell {} compresses its piston along axis {}{} for the motion of module "
           "{} ({}); this motion needs axis {}{}",
           module.id.value, geometry::toString(module.cell), hold.axis,
           hold.double_ ? " then another" : "", holder.mobile.value, untilText(holder.until),
-          blocker.axis, blocker.double_ ? " then another" : "");
+          helper.axis, helper.double_ ? " then another" : "");
     } else {
       continue;
     }
@@ -129,9 +129,9 @@ void Reservations::reserve(const Claim& claim, const Holder& holder) {
   for (const geometry::Cell& cell : claim.cells) cells_[world::packCell(cell)] = holder;
   modules_[claim.mobile] = {Role::kMobile, -1, false, {holder}};
   modules_[claim.pivot] = {Role::kPivot, -1, false, {holder}};
-  for (const Claim::Blocker& blocker : claim.blockers) {
+  for (const Claim::Helper& helper : claim.helpers) {
     auto [it, fresh] = modules_.try_emplace(
-        blocker.module, ModuleHold{Role::kBlocker, blocker.axis, blocker.double_, {}});
+        helper.module, ModuleHold{Role::kHelper, helper.axis, helper.double_, {}});
     it->second.holders.push_back(holder);
   }
 }
@@ -149,7 +149,7 @@ void Reservations::release(const Claim& claim, int slot) {
   };
   drop(claim.mobile);
   drop(claim.pivot);
-  for (const Claim::Blocker& blocker : claim.blockers) drop(blocker.module);
+  for (const Claim::Helper& helper : claim.helpers) drop(helper.module);
 }
 
 }  // namespace datomsim::sim

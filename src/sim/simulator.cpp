@@ -402,7 +402,7 @@ Status Simulator::compress(uint32_t index, int ownPiston) {
 Status Simulator::release(uint32_t index) {
   const ModuleId id = world_.modules()[index].id;
   // A motion in progress needs the piston: safe by construction, the release waits.
-  if (const auto holder = motions_.reservations().blockerHolder(index)) {
+  if (const auto holder = motions_.reservations().helperHolder(index)) {
     Status refused = Error{fmt::format(
         "module {}: cannot release its piston: the motion of module {} needs it compressed ({})",
         id.value, holder->mobile.value, untilText(holder->until))};

@@ -135,8 +135,8 @@ TEST(PaperExperiment, FollowGradientTakesTheSamePathAsTheCentralisedWalk) {
 
 // Irregular shapes are where greedy routing stalls and the deformation messages flood; every
 // request must still be handled exactly once (a second copy of a DeformMsg would fail the
-// blocking module; a second AckDeform would start the motion early). In such sparse scenes a
-// blocking module can also be a bridge: once it compresses, no latched path leads back to the
+// helper; a second AckDeform would start the motion early). In such sparse scenes a
+// helper can also be a bridge: once it compresses, no latched path leads back to the
 // mobile and its AckDeform cannot arrive. Such a run must say so, never claim a path.
 TEST(PaperExperiment, FollowGradientArrivesOrSaysWhyOnRandomScenes) {
   int flooded = 0, arrived = 0;

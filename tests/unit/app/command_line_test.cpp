@@ -239,7 +239,7 @@ TEST_F(CommandLine, RunFollowGradientReportsItsStatistics) {
   for (const auto& [kind, count] : json["events_by_kind"].items()) sum += count.get<uint64_t>();
   EXPECT_EQ(sum, json["events"].get<uint64_t>());
   EXPECT_EQ(json["events_by_kind"]["motion-end"], 7);
-  // Each motion's blocking modules compress and release: deformations come in pairs.
+  // Each motion's helpers compress and release: deformations come in pairs.
   EXPECT_GT(json["deformations"].get<int>(), 0);
   EXPECT_EQ(json["deformations"].get<int>() % 2, 0);
   // --stats speaks on standard error, with the wall time the JSON leaves out.

@@ -297,16 +297,16 @@ struct Parts {
         motions(world, {}, mechanics, agenda, announce, {kSecond, 500 * kMillisecond}, limits) {}
 };
 
-TEST(Invariants, ABlockingModuleThatLetsGoWhileTheMobilePassesIsCaught) {
+TEST(Invariants, AHelperThatLetsGoWhileTheMobilePassesIsCaught) {
   // The go-ahead rule with a module in cell C (def(R)) held by a support behind it.
   const motion::Rule& rule = table().rule(2);
   const Cell pivot{5, 5, 5};
   const Cell mobile = pivot + rule.mobileOffset;
-  const Cell blocker = pivot + rule.cells[2].offset;
+  const Cell helper = pivot + rule.cells[2].offset;
   const Cell support =
-      blocker + geometry::neighbourOffset(*geometry::directionOfAxes(
-                    geometry::oppositeAxis(rule.right), geometry::oppositeAxis(rule.front)));
-  Parts parts(WorldBuilder().module(pivot).module(mobile).module(blocker).module(support).build(),
+      helper + geometry::neighbourOffset(*geometry::directionOfAxes(
+                   geometry::oppositeAxis(rule.right), geometry::oppositeAxis(rule.front)));
+  Parts parts(WorldBuilder().module(pivot).module(mobile).module(helper).module(support).build(),
               {});
   parts.mechanics.compress(2, parts.world.modules()[2].orientation.ownPiston(rule.right));
   parts.agenda.pop();

@@ -19,8 +19,8 @@ class ReservationsTest : public ::testing::Test {
   const Reservations::Holder second_{1, ModuleId{4}, 3 * kSecond};
 
   static Claim claim(uint32_t mobile, uint32_t pivot, std::vector<Cell> cells = {},
-                     std::vector<Claim::Blocker> blockers = {}) {
-    return Claim{mobile, pivot, std::move(cells), std::move(blockers)};
+                     std::vector<Claim::Helper> helpers = {}) {
+    return Claim{mobile, pivot, std::move(cells), std::move(helpers)};
   }
 };
 
@@ -48,7 +48,7 @@ TEST_F(ReservationsTest, APivotServesOneMotionAndAMovingModuleIsNoPivot) {
   EXPECT_EQ(conflict->text, "pivot 1 is the mobile of the motion of module 1 (until 2 s)");
 }
 
-TEST_F(ReservationsTest, ABlockingModuleIsSharedOnlyForTheSameSingleAxis) {
+TEST_F(ReservationsTest, AHelperIsSharedOnlyForTheSameSingleAxis) {
   reservations_.reserve(claim(0, 1, {}, {{5, 2, false}}), first_);
   EXPECT_FALSE(reservations_.conflict(world_, claim(3, 4, {}, {{5, 2, false}})).has_value());
   const auto otherAxis = reservations_.conflict(world_, claim(3, 4, {}, {{5, 1, false}}));
@@ -65,17 +65,17 @@ TEST_F(ReservationsTest, ABlockingModuleIsSharedOnlyForTheSameSingleAxis) {
   EXPECT_TRUE(reservations_.conflict(world_, claim(3, 4, {}, {{1, 2, false}})).has_value());
 }
 
-TEST_F(ReservationsTest, ASharedBlockingModuleIsHeldUntilItsLastMotionEnds) {
+TEST_F(ReservationsTest, ASharedHelperIsHeldUntilItsLastMotionEnds) {
   const Claim a = claim(0, 1, {}, {{5, 2, false}});
   const Claim b = claim(3, 4, {}, {{5, 2, false}});
   reservations_.reserve(a, first_);
   reservations_.reserve(b, second_);
-  ASSERT_TRUE(reservations_.blockerHolder(5).has_value());
-  EXPECT_EQ(reservations_.blockerHolder(5)->mobile, ModuleId{4});  // the later end
+  ASSERT_TRUE(reservations_.helperHolder(5).has_value());
+  EXPECT_EQ(reservations_.helperHolder(5)->mobile, ModuleId{4});  // the later end
   reservations_.release(b, second_.slot);
-  EXPECT_EQ(reservations_.blockerHolder(5)->mobile, ModuleId{1});
+  EXPECT_EQ(reservations_.helperHolder(5)->mobile, ModuleId{1});
   reservations_.release(a, first_.slot);
-  EXPECT_FALSE(reservations_.blockerHolder(5).has_value());
+  EXPECT_FALSE(reservations_.helperHolder(5).has_value());
 }
 
 TEST_F(ReservationsTest, ReleasingAMotionFreesWhatItHeldAndNothingElse) {

@@ -240,18 +240,18 @@ TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
 }
 
 // The go-ahead rule with a module in cell C (def(R)) held by a support behind it.
-struct BlockedStage : Stage {
-  Cell blocker = pivot + rule.cells[2].offset;  // C
+struct StageWithHelper : Stage {
+  Cell helper = pivot + rule.cells[2].offset;  // C
   Cell support =
-      blocker + geometry::neighbourOffset(*geometry::directionOfAxes(
-                    geometry::oppositeAxis(rule.right), geometry::oppositeAxis(rule.front)));
+      helper + geometry::neighbourOffset(*geometry::directionOfAxes(
+                   geometry::oppositeAxis(rule.right), geometry::oppositeAxis(rule.front)));
   world::World build() const {
-    return WorldBuilder().module(pivot).module(mobile).module(blocker).module(support).build();
+    return WorldBuilder().module(pivot).module(mobile).module(helper).module(support).build();
   }
 };
 
-TEST(Simulator, AMotionWhoseBlockingModuleHasNotCompressedIsRefused) {
-  const BlockedStage stage;
+TEST(Simulator, AMotionWhoseHelperHasNotCompressedIsRefused) {
+  const StageWithHelper stage;
   ASSERT_EQ(stage.rule.cells[2].role, motion::CellRole::kC);
   std::map<uint32_t, Script> programs;
   std::optional<MoveResult> started;
@@ -267,14 +267,14 @@ TEST(Simulator, AMotionWhoseBlockingModuleHasNotCompressedIsRefused) {
   ASSERT_TRUE(simulator.run().ok());
   ASSERT_TRUE(started.has_value());
   ASSERT_FALSE(started->ok());
-  EXPECT_EQ(started->refusal().reason, MoveRefusal::Reason::kBlockerNotReady);
+  EXPECT_EQ(started->refusal().reason, MoveRefusal::Reason::kHelperNotReady);
   EXPECT_NE(started->error().find("must compress"), std::string::npos) << started->error();
 }
 
 TEST(Simulator, ReleasingAPistonAMotionNeedsIsRefusedNamingTheMotion) {
-  const BlockedStage stage;
+  const StageWithHelper stage;
   std::map<uint32_t, Script> programs;
-  // The blocker compresses at once and tries to let go half-way through the motion.
+  // The helper compresses at once and tries to let go half-way through the motion.
   std::optional<Status> released;
   programs[3].start = [&](ModuleContext& c) {
     ASSERT_TRUE(c.compress(c.orientation().ownPiston(stage.rule.right)).ok());

@@ -1,0 +1,210 @@
+#include "algorithms/reconfigure.h"
+
+#include <algorithm>
+
+#include "geometry/lattice.h"
+
+namespace datomsim::algorithms {
+
+using geometry::Cell;
+
+void ReconfigureProgram::watch(program::ModuleContext& context) {
+  ++round_;
+  context.setTimer(kPatience, kWatchdog + int(round_ & 0xffffff));
+}
+
+void ReconfigureProgram::onWatchdog(program::ModuleContext& context, uint32_t round) {
+  if (round != (round_ & 0xffffff)) return;
+  // Answers lost on the way (a module that moved, a route cut): give the round up.
+  if (phase_ == Phase::kAsking) {
+    waitingReplies_ = 0;
+    choose(context);
+  } else if (phase_ == Phase::kConfirming) {
+    waitingReplies_ = 0;
+    retryLater(context);
+  } else if (phase_ == Phase::kDeforming) {
+    helpers_.giveUp();
+    attemptFailed();
+    retryAfterRelease_ = true;
+    releaseHelpers(context);
+  } else if (phase_ == Phase::kReleasing) {
+    helpers_.stopWaiting();
+    afterRelease(context);
+  }
+}
+
+void ReconfigureProgram::step(program::ModuleContext& context) {
+  if (settled_) return;
+  // A module that holds a piston for another's motion waits for it to be done.
+  if (makingWay()) return retryLater(context);
+  if (leavingFor_) return stepIntoPocket(context);
+  if (isOpen(context, context.cell())) return confirm(context);
+  candidates_.clear();
+  for (motion::Evaluation& evaluation : context.motions()) {
+    if (auto* motion = std::get_if<motion::Motion>(&evaluation)) {
+      candidates_.push_back(std::move(*motion));
+    }
+  }
+  if (candidates_.empty()) return retryLater(context);
+  candidateDistances_.assign(candidates_.size(), kUnknown);
+  candidateVersions_.assign(candidates_.size(), 0);
+  candidateSettled_.assign(candidates_.size(), false);
+  waitingReplies_ = int(candidates_.size());
+  phase_ = Phase::kAsking;
+  for (size_t i = 0; i < candidates_.size(); ++i) {
+    const auto direction = geometry::directionOfOffset(candidates_[i].pivotCell - context.cell());
+    const int connector = context.orientation().ownConnector(*direction);
+    const Status sent =
+        context.send(connector, Message::of(GoalQuery{candidates_[i].goal, int32_t(i)}));
+    if (!sent.ok()) --waitingReplies_;  // not latched to that pivot any more
+  }
+  if (waitingReplies_ == 0) {
+    phase_ = Phase::kWaiting;
+    return retryLater(context);
+  }
+  watch(context);
+}
+
+void ReconfigureProgram::attemptFailed() {
+  ++refusals_;
+  if (!chosen_) return;
+  for (auto& [goal, times] : failedGoals_) {
+    if (goal == chosen_->goal) return void(++times);
+  }
+  failedGoals_.push_back({chosen_->goal, 1});
+}
+
+int64_t ReconfigureProgram::effective(int candidate) const {
+  // In quarter motions: a goal whose attempts failed looks farther each time, so that another way
+  // gets its chance; between goals as near, the one that needs fewer helpers.
+  int64_t cost = 4 * int64_t(candidateDistances_[candidate]) +
+                 int64_t(candidates_[candidate].deformations.size());
+  for (const auto& [goal, times] : failedGoals_) {
+    if (goal == candidates_[candidate].goal) cost += 12 * int64_t(times);
+  }
+  return cost;
+}
+
+void ReconfigureProgram::choose(program::ModuleContext& context) {
+  // Asked to make way meanwhile: that comes first.
+  if (makingWay()) return retryLater(context);
+  // The smallest distance of the newest version; ties to the first rule in table order. A motion
+  // about a settled pivot comes first: one about another mover climbs onto what will leave.
+  const uint64_t newest = *std::max_element(candidateVersions_.begin(), candidateVersions_.end());
+  int best = -1;
+  for (const bool settledPivot : {true, false}) {
+    for (size_t i = 0; i < candidates_.size(); ++i) {
+      if (candidateVersions_[i] != newest || candidateDistances_[i] == kUnknown ||
+          candidateSettled_[i] != settledPivot) {
+        continue;
+      }
+      if (best < 0 || effective(int(i)) < effective(best)) best = int(i);
+    }
+    if (best >= 0) break;
+  }
+  if (best < 0) {
+    phase_ = Phase::kWaiting;
+    return retryLater(context);
+  }
+  // Down the gradient; sideways or up only when no way down has come for a few rounds.
+  if (standingVersion_ != newest) standing_ = kUnknown;
+  if (standing_ != kUnknown && candidateDistances_[best] >= standing_ &&
+      roundsWithoutDescent_ < 3) {
+    ++roundsWithoutDescent_;
+    phase_ = Phase::kWaiting;
+    return retryLater(context);
+  }
+  roundsWithoutDescent_ = 0;
+  chosen_ = candidates_[best];
+  chosenDistance_ = candidateDistances_[best];
+  chosenVersion_ = newest;
+  helpers_.clear();
+  if (chosen_->deformations.empty()) {
+    phase_ = Phase::kMoving;
+    const MoveResult moved = context.move(*chosen_);
+    if (!moved.ok()) {
+      attemptFailed();
+      chosen_.reset();
+      retryLater(context);
+    }
+    return;
+  }
+  phase_ = Phase::kDeforming;
+  // A release names the request it ends, so that a helper lets go of that grant only; the number
+  // mixes in the mover's id, since the mover may have moved (its cell names nothing).
+  note(helpers_.ask(context, router_, *chosen_,
+                    [&] { return context.id().value * 0x9E3779B1u + nextRequest_++; }));
+  watch(context);
+}
+
+void ReconfigureProgram::onHelperAnswer(program::ModuleContext& context, const RoutedMsg& answer,
+                                        bool granted) {
+  if (phase_ != Phase::kDeforming) return;
+  const MotionHelpers::Answers answers = helpers_.hear(answer, granted);
+  if (answers == MotionHelpers::Answers::kWaiting) return;
+  if (answers == MotionHelpers::Answers::kRefused) {
+    attemptFailed();
+    retryAfterRelease_ = true;
+    return releaseHelpers(context);
+  }
+  move(context);
+}
+
+void ReconfigureProgram::move(program::ModuleContext& context) {
+  phase_ = Phase::kMoving;
+  const MoveResult moved = context.move(*chosen_);
+  if (!moved.ok()) {
+    attemptFailed();
+    retryAfterRelease_ = true;
+    releaseHelpers(context);
+  } else if (moved.state() == MoveResult::State::kQueued) {
+    // Waiting for its turn may outlast the helpers' leases: renewed while it waits.
+    context.setTimer(kLeaseTime / 2, kRenew);
+  }
+}
+
+void ReconfigureProgram::retryLater(program::ModuleContext& context) {
+  phase_ = Phase::kWaiting;
+  ++idleRounds_;
+  context.setTimer(context.random().between(200, 1200) * kMillisecond, kStep);
+}
+
+void ReconfigureProgram::releaseHelpers(program::ModuleContext& context) {
+  // Every helper asked this round (MotionHelpers::letGo).
+  phase_ = Phase::kReleasing;
+  if (helpers_.size() == 0) return afterRelease(context);
+  note(helpers_.letGo(context, router_));
+  watch(context);
+}
+
+void ReconfigureProgram::afterRelease(program::ModuleContext& context) {
+  helpers_.clear();
+  chosen_.reset();
+  phase_ = Phase::kWaiting;
+  if (isOpen(context, context.cell())) return confirm(context);
+  // After a motion, go on at once; after a refusal, wait first.
+  if (retryAfterRelease_) {
+    retryAfterRelease_ = false;
+    return retryLater(context);
+  }
+  step(context);
+}
+
+void ReconfigureProgram::onMotionDone(program::ModuleContext& context) {
+  ++motions_;
+  leavingFor_.reset();
+  failedGoals_.clear();
+  standing_ = chosenDistance_;
+  standingVersion_ = chosenVersion_;
+  idleRounds_ = 0;
+  retryAfterRelease_ = false;
+  releaseHelpers(context);
+}
+
+void ReconfigureProgram::onMotionRefused(program::ModuleContext& context, const MoveRefusal&) {
+  attemptFailed();
+  retryAfterRelease_ = true;
+  releaseHelpers(context);
+}
+
+}  // namespace datomsim::algorithms

@@ -1,6 +1,6 @@
-// datomsim._core: the Python package's C++ half (docs/python.md). It drives the same functions as
-// the command line (apps/datomsim: runOnScene, reachOnScene, movesJson), so that a run from
-// Python gives the JSON `run --out` gives, and a refusal the same message, raised as
+// datomsim._core: the Python package's C++ half (docs/python.md). It drives the services the
+// command line's subcommands drive (src/frontend: runOnScene, reachOnScene, movesJson), so that a
+// run from Python gives the JSON `run --out` gives, and a refusal the same message, raised as
 // datomsim.Error. Arrays (cells, distances, colours) are numpy arrays; the rest is what
 // datomsim/__init__.py shapes into Python values.
 #include <pybind11/numpy.h>
@@ -14,8 +14,15 @@
 #include <string>
 #include <vector>
 
-#include "../../apps/datomsim/commands.h"
-#include "../../apps/datomsim/motion_json.h"
+#include "frontend/arguments.h"
+#include "frontend/geometry_json.h"
+#include "frontend/motion_json.h"
+#include "frontend/reach_on_scene.h"
+#include "frontend/reshape_case.h"
+#include "frontend/run_json.h"
+#include "frontend/run_on_scene.h"
+#include "frontend/usage_error.h"
+#include "frontend/visiblesim_grid.h"
 #include "geometry/cell_text.h"
 #include "geometry/lattice.h"
 #include "io/scene_file.h"
@@ -29,13 +36,13 @@ namespace py = pybind11;
 namespace datomsim::python {
 namespace {
 
-using app::UsageError;
+using frontend::UsageError;
 using geometry::Cell;
 
 // A cell given as (x, y, z) or as the command line's text ("6,5,2", "(6,5,2)"); errors name
 // `option` as the command line would.
 Cell cellArgument(const py::handle& value, const std::string& option) {
-  if (py::isinstance<py::str>(value)) return app::parseCell(option, value.cast<std::string>());
+  if (py::isinstance<py::str>(value)) return frontend::parseCell(option, value.cast<std::string>());
   if (py::isinstance<py::sequence>(value) && py::len(value) == 3) {
     const py::sequence items = value.cast<py::sequence>();
     std::string text;
@@ -48,7 +55,7 @@ Cell cellArgument(const py::handle& value, const std::string& option) {
       text += (k ? "," : "") +
               py::str(py::int_(py::reinterpret_borrow<py::object>(item))).cast<std::string>();
     }
-    return app::parseCell(option, text);
+    return frontend::parseCell(option, text);
   }
   throw UsageError(fmt::format("{} {}: expected three integers x,y,z", option,
                                py::repr(value).cast<std::string>()));
@@ -75,8 +82,9 @@ std::string onOff(bool on) {
   return on ? "on" : "off";
 }
 
-app::RuleArguments ruleArguments(const std::string& rules, bool attachment, bool connectivity) {
-  app::RuleArguments arguments;
+frontend::RuleArguments ruleArguments(const std::string& rules, bool attachment,
+                                      bool connectivity) {
+  frontend::RuleArguments arguments;
   arguments.rules = rules;
   arguments.attachment = onOff(attachment);
   arguments.connectivity = onOff(connectivity);
@@ -87,12 +95,12 @@ app::RuleArguments ruleArguments(const std::string& rules, bool attachment, bool
 world::ModuleKind kindOf(const std::optional<std::string>& module, world::ModuleKind scene) {
   if (!module) return scene;
   if (const auto kind = world::moduleKindNamed(*module)) return *kind;
-  throw app::UsageError("--module: " + *module + " not in {datom,catom3d}");
+  throw frontend::UsageError("--module: " + *module + " not in {datom,catom3d}");
 }
 
 catom3d::RollRules rollingOf(const std::string& rolling) {
   if (const auto rules = catom3d::rollRulesNamed(rolling)) return *rules;
-  throw app::UsageError("--rolling: " + rolling + " not in {symmetric,visiblesim}");
+  throw frontend::UsageError("--rolling: " + rolling + " not in {symmetric,visiblesim}");
 }
 
 // A scene in memory: the modules and what the file formats carry besides them.
@@ -161,13 +169,13 @@ class Scene {
       }
     }
     const ModuleId id = scene_.world.nextFreeId();
-    app::check(scene_.world.add({id, at, *code, Color{uint8_t(r), uint8_t(g), uint8_t(b)}}));
+    frontend::check(scene_.world.add({id, at, *code, Color{uint8_t(r), uint8_t(g), uint8_t(b)}}));
     scene_.world.latchAllNeighbours();
     return id.value;
   }
-  void remove(uint32_t id) { app::check(scene_.world.remove(ModuleId{id})); }
+  void remove(uint32_t id) { frontend::check(scene_.world.remove(ModuleId{id})); }
   void move(uint32_t id, const py::object& cell) {
-    app::check(scene_.world.move(ModuleId{id}, cellArgument(cell, "cell")));
+    frontend::check(scene_.world.move(ModuleId{id}, cellArgument(cell, "cell")));
     scene_.world.latchAllNeighbours();
   }
   std::optional<uint32_t> moduleAt(const py::object& cell) const {
@@ -198,15 +206,16 @@ class Scene {
   std::vector<py::array_t<int32_t>> targets() const {
     std::vector<py::array_t<int32_t>> out;
     for (const target::Target& shape : scene_.targets) {
-      out.push_back(cellArray(app::unwrap(shape.cells())));
+      out.push_back(cellArray(frontend::unwrap(shape.cells())));
     }
     return out;
   }
 
   void save(const std::filesystem::path& path) const {
     io::Scene written = scene_;
-    app::declareGridForVisibleSim(written, path.string());
-    app::check(io::writeScene(written, path));
+    // Python says nothing on standard error: the grid is in the file, for Python to read.
+    frontend::declareGridForVisibleSim(written, path.string(), frontend::Reporter(/*quiet=*/true));
+    frontend::check(io::writeScene(written, path));
   }
 
   Scene copy() const { return *this; }
@@ -234,11 +243,11 @@ py::dict reach(const Scene& scene, const py::object& goal, const py::object& sta
                const std::string& rules, bool attachment, bool connectivity,
                const std::optional<std::string>& module, const std::string& rolling) {
   const Cell at = cellArgument(goal, "--goal");
-  const app::MotionModel model{kindOf(module, scene.scene().moduleKind),
-                               ruleArguments(rules, attachment, connectivity).options(),
-                               rollingOf(rolling)};
-  const app::ReachOutput reached =
-      app::reachOnScene(scene.scene(), at, optionalCell(start, "--start"), model);
+  const frontend::MotionModel model{kindOf(module, scene.scene().moduleKind),
+                                    ruleArguments(rules, attachment, connectivity).options(),
+                                    rollingOf(rolling)};
+  const frontend::ReachOutput reached =
+      frontend::reachOnScene(scene.scene(), at, optionalCell(start, "--start"), model);
   const auto sorted = reached.map.sorted();
   std::vector<Cell> cells;
   py::array_t<int32_t> distances{py::ssize_t(sorted.size())};
@@ -267,21 +276,22 @@ std::string moves(const Scene& scene, const py::object& at, const std::string& r
   }
   const world::Module* mobile = world.moduleAt(cell);
   const motion::Mobile where{cell, mobile ? std::optional(mobile->id) : std::nullopt};
-  const app::MotionModel model{kindOf(module, scene.scene().moduleKind),
-                               ruleArguments(rules, attachment, false).options(),
-                               rollingOf(rolling)};
+  const frontend::MotionModel model{kindOf(module, scene.scene().moduleKind),
+                                    ruleArguments(rules, attachment, false).options(),
+                                    rollingOf(rolling)};
   if (model.kind == world::ModuleKind::kCatom3D) {
     const catom3d::RollTable rolls;
-    return app::rollsJson(cell, catom3d::evaluateAll(world, rolls, where, model.rolling), model);
+    return frontend::rollsJson(cell, catom3d::evaluateAll(world, rolls, where, model.rolling),
+                               model);
   }
   const motion::RuleTable table;
-  return app::movesJson(cell, motion::evaluateAll(world, table, where, model.datom));
+  return frontend::movesJson(cell, motion::evaluateAll(world, table, where, model.datom));
 }
 
 // (the JSON text of `run --out`, the trace or None, the failure or None).
 std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> run(
     const Scene& scene, const std::string& program, const py::dict& options) {
-  app::RunArguments args;
+  frontend::RunArguments args;
   args.program = program;
   const std::set<std::string> known = {
       "goal",     "start",     "rules",       "attachment", "connectivity", "seed",
@@ -331,10 +341,10 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
   const std::string sceneName = options.contains("scene_name")
                                     ? options["scene_name"].cast<std::string>()
                                     : scene.scene().name.value_or("a scene from Python");
-  app::RunOutput output = app::runOnScene(scene.scene(), sceneName, args);
+  frontend::RunOutput output = frontend::runOnScene(scene.scene(), sceneName, args);
   std::optional<std::string> trace;
   if (args.wantTrace) trace = std::move(output.result.trace);
-  return {app::runJson(output.info, output.result, output.parameters), std::move(trace),
+  return {frontend::runJson(output.info, output.result, output.parameters), std::move(trace),
           output.failure};
 }
 
@@ -343,7 +353,7 @@ std::string geometryOf(double radius, double thickness, const std::optional<doub
   if (fraction && !(*fraction >= 0 && *fraction <= 1)) {
     throw UsageError(fmt::format("--fraction: Value {} not in range [0 - 1]", *fraction));
   }
-  return app::geometryJson(radius, thickness, fraction).dump();
+  return frontend::geometryJson(radius, thickness, fraction).dump();
 }
 
 }  // namespace
@@ -353,9 +363,8 @@ PYBIND11_MODULE(_core, module) {
   using namespace datomsim;
   using namespace datomsim::python;
   module.doc() = "datomsim's C++ core: scenes, reach, moves, runs (see the package datomsim)";
-  app::setQuiet(true);  // Python says nothing on standard error; the values say it all
-  py::register_exception<app::UsageError>(module, "Error", PyExc_ValueError);
-  py::register_exception<app::CheckFailed>(module, "CheckFailed", PyExc_RuntimeError);
+  py::register_exception<frontend::UsageError>(module, "Error", PyExc_ValueError);
+  py::register_exception<frontend::CheckFailed>(module, "CheckFailed", PyExc_RuntimeError);
 
   py::class_<Scene>(module, "Scene", "A scene: modules in an FCC lattice, and target shapes")
       .def("__len__", &Scene::size)
@@ -386,7 +395,9 @@ PYBIND11_MODULE(_core, module) {
 
   module.def(
       "load_scene",
-      [](const std::filesystem::path& path) { return Scene(app::unwrap(io::readScene(path))); },
+      [](const std::filesystem::path& path) {
+        return Scene(frontend::unwrap(io::readScene(path)));
+      },
       py::arg("path"), "Read a .json or VisibleSim .xml scene file");
   module.def(
       "box",
@@ -395,7 +406,7 @@ PYBIND11_MODULE(_core, module) {
         options.origin = cellArgument(origin, "--origin");
         options.upright = upright;
         const geometry::Cell cells = cellArgument(size, "--size");
-        return sceneOf(app::unwrap(scene::box(cells, options)),
+        return sceneOf(frontend::unwrap(scene::box(cells, options)),
                        fmt::format("box {}x{}x{}", cells.x, cells.y, cells.z));
       },
       py::arg("size"), py::arg("origin") = py::make_tuple(0, 0, 0), py::arg("upright") = false,
@@ -403,7 +414,7 @@ PYBIND11_MODULE(_core, module) {
   module.def(
       "arch",
       [](int hole) {
-        return sceneOf(app::unwrap(scene::paperArch(hole)),
+        return sceneOf(frontend::unwrap(scene::paperArch(hole)),
                        fmt::format("paper arch, hole {} high", hole));
       },
       py::arg("hole") = 2, "The paper's scene with an arch whose hole is 2 or 1 high");
@@ -412,7 +423,7 @@ PYBIND11_MODULE(_core, module) {
       [](size_t count, uint64_t seed, const py::object& grid) {
         scene::RandomOptions options;
         options.gridSize = optionalCell(grid, "--grid");
-        return sceneOf(app::unwrap(scene::random(seed, count, options)),
+        return sceneOf(frontend::unwrap(scene::random(seed, count, options)),
                        fmt::format("random, {} modules, seed {}", count, seed));
       },
       py::arg("count"), py::arg("seed") = 1, py::arg("grid") = py::none(),
@@ -421,7 +432,7 @@ PYBIND11_MODULE(_core, module) {
       "reshape",
       [](const std::string& kase, int length, const py::object& floor, int modules, uint64_t seed,
          int side, int base) {
-        app::ReshapeArguments args;
+        frontend::ReshapeArguments args;
         args.kase = kase;
         args.length = length;
         const geometry::Cell size = cellArgument(
@@ -434,7 +445,7 @@ PYBIND11_MODULE(_core, module) {
         args.seed = std::to_string(seed);
         args.side = side;
         args.base = base;
-        return Scene(app::reshapeCase(args));
+        return Scene(frontend::reshapeCase(args));
       },
       py::arg("case"), py::arg("length") = 8, py::arg("floor") = py::make_tuple(12, 12),
       py::arg("modules") = 20, py::arg("seed") = 1, py::arg("side") = 96, py::arg("base") = 0,

@@ -22,11 +22,10 @@
 #include "frontend/run_json.h"
 #include "frontend/run_on_scene.h"
 #include "frontend/usage_error.h"
-#include "frontend/visiblesim_grid.h"
 #include "geometry/cell_text.h"
-#include "geometry/lattice.h"
 #include "io/scene_file.h"
 #include "motion/motion.h"
+#include "scene.h"
 #include "scene/box.h"
 #include "scene/paper_arch.h"
 #include "scene/random_scene.h"
@@ -38,45 +37,6 @@ namespace {
 
 using frontend::UsageError;
 using geometry::Cell;
-
-// A cell given as (x, y, z) or as the command line's text ("6,5,2", "(6,5,2)"); errors name
-// `option` as the command line would.
-Cell cellArgument(const py::handle& value, const std::string& option) {
-  if (py::isinstance<py::str>(value)) return frontend::parseCell(option, value.cast<std::string>());
-  if (py::isinstance<py::sequence>(value) && py::len(value) == 3) {
-    const py::sequence items = value.cast<py::sequence>();
-    std::string text;
-    for (size_t k = 0; k < 3; ++k) {
-      const py::handle item = items[k];
-      if (!py::isinstance<py::int_>(item) && !(py::hasattr(item, "__index__"))) {
-        throw UsageError(fmt::format("{} {}: expected three integers x,y,z", option,
-                                     py::repr(value).cast<std::string>()));
-      }
-      text += (k ? "," : "") +
-              py::str(py::int_(py::reinterpret_borrow<py::object>(item))).cast<std::string>();
-    }
-    return frontend::parseCell(option, text);
-  }
-  throw UsageError(fmt::format("{} {}: expected three integers x,y,z", option,
-                               py::repr(value).cast<std::string>()));
-}
-
-std::optional<Cell> optionalCell(const py::object& value, const std::string& option) {
-  if (value.is_none()) return std::nullopt;
-  return cellArgument(value, option);
-}
-
-// An (n, 3) int32 array of cells.
-py::array_t<int32_t> cellArray(const std::vector<Cell>& cells) {
-  py::array_t<int32_t> out({py::ssize_t(cells.size()), py::ssize_t(3)});
-  auto view = out.mutable_unchecked<2>();
-  for (size_t k = 0; k < cells.size(); ++k) {
-    view(py::ssize_t(k), 0) = cells[k].x;
-    view(py::ssize_t(k), 1) = cells[k].y;
-    view(py::ssize_t(k), 2) = cells[k].z;
-  }
-  return out;
-}
 
 std::string onOff(bool on) {
   return on ? "on" : "off";
@@ -91,151 +51,9 @@ frontend::RuleArguments ruleArguments(const std::string& rules, bool attachment,
   return arguments;
 }
 
-// The module kind named, or the scene's; refused as the command line refuses it.
-world::ModuleKind kindOf(const std::optional<std::string>& module, world::ModuleKind scene) {
-  if (!module) return scene;
-  if (const auto kind = world::moduleKindNamed(*module)) return *kind;
-  throw frontend::UsageError("--module: " + *module + " not in {datom,catom3d}");
-}
-
 catom3d::RollRules rollingOf(const std::string& rolling) {
   if (const auto rules = catom3d::rollRulesNamed(rolling)) return *rules;
   throw frontend::UsageError("--rolling: " + rolling + " not in {symmetric,visiblesim}");
-}
-
-// A scene in memory: the modules and what the file formats carry besides them.
-class Scene {
- public:
-  explicit Scene(io::Scene scene) : scene_(std::move(scene)) {}
-
-  const io::Scene& scene() const { return scene_; }
-  std::string module() const { return std::string(world::toString(scene_.moduleKind)); }
-  void setModule(const std::string& module) {
-    scene_.moduleKind = kindOf(module, scene_.moduleKind);
-  }
-
-  size_t size() const { return scene_.world.size(); }
-
-  py::array_t<int32_t> cells() const {
-    std::vector<Cell> cells;
-    cells.reserve(size());
-    for (const world::Module& m : scene_.world.modules()) cells.push_back(m.cell);
-    return cellArray(cells);
-  }
-  py::array_t<uint32_t> ids() const {
-    py::array_t<uint32_t> out{py::ssize_t(size())};
-    auto view = out.mutable_unchecked<1>();
-    py::ssize_t k = 0;
-    for (const world::Module& m : scene_.world.modules()) view(k++) = m.id.value;
-    return out;
-  }
-  py::array_t<uint8_t> colors() const {
-    py::array_t<uint8_t> out({py::ssize_t(size()), py::ssize_t(3)});
-    auto view = out.mutable_unchecked<2>();
-    py::ssize_t k = 0;
-    for (const world::Module& m : scene_.world.modules()) {
-      view(k, 0) = m.color.r;
-      view(k, 1) = m.color.g;
-      view(k, 2) = m.color.b;
-      ++k;
-    }
-    return out;
-  }
-  py::array_t<uint8_t> orientations() const {
-    py::array_t<uint8_t> out{py::ssize_t(size())};
-    auto view = out.mutable_unchecked<1>();
-    py::ssize_t k = 0;
-    for (const world::Module& m : scene_.world.modules()) {
-      view(k++) = uint8_t(m.orientation.code());
-    }
-    return out;
-  }
-  std::optional<std::tuple<int, int, int>> grid() const {
-    const auto& size = scene_.world.bounds().gridSize;
-    if (!size) return std::nullopt;
-    return std::tuple{size->x, size->y, size->z};
-  }
-  std::optional<std::string> name() const { return scene_.name; }
-
-  // Adds a module (the next free id) and latches it to its neighbours; returns its id.
-  uint32_t add(const py::object& cell, int orientation, const std::tuple<int, int, int>& color) {
-    const Cell at = cellArgument(cell, "cell");
-    const auto code = geometry::Orientation::fromCode(orientation);
-    if (!code) throw UsageError(fmt::format("orientation {}: a code in 0..23", orientation));
-    const auto [r, g, b] = color;
-    for (const int channel : {r, g, b}) {
-      if (channel < 0 || channel > 255) {
-        throw UsageError(fmt::format("color ({},{},{}): channels in 0..255", r, g, b));
-      }
-    }
-    const ModuleId id = scene_.world.nextFreeId();
-    frontend::check(scene_.world.add({id, at, *code, Color{uint8_t(r), uint8_t(g), uint8_t(b)}}));
-    scene_.world.latchAllNeighbours();
-    return id.value;
-  }
-  void remove(uint32_t id) { frontend::check(scene_.world.remove(ModuleId{id})); }
-  void move(uint32_t id, const py::object& cell) {
-    frontend::check(scene_.world.move(ModuleId{id}, cellArgument(cell, "cell")));
-    scene_.world.latchAllNeighbours();
-  }
-  std::optional<uint32_t> moduleAt(const py::object& cell) const {
-    const world::Module* m = scene_.world.moduleAt(cellArgument(cell, "cell"));
-    if (m == nullptr) return std::nullopt;
-    return m->id.value;
-  }
-
-  // Every empty cell inside the world next to a module, sorted by x, then y, then z: where a
-  // module could be added or a mobile could stand.
-  py::array_t<int32_t> freeSurfaceCells() const {
-    std::set<std::tuple<int32_t, int32_t, int32_t>> found;
-    for (const world::Module& m : scene_.world.modules()) {
-      for (int d = 0; d < geometry::kDirectionCount; ++d) {
-        const Cell next = m.cell + geometry::neighbourOffset(d);
-        if (scene_.world.isInside(next) && scene_.world.moduleAt(next) == nullptr) {
-          found.insert({next.x, next.y, next.z});
-        }
-      }
-    }
-    std::vector<Cell> cells;
-    cells.reserve(found.size());
-    for (const auto& [x, y, z] : found) cells.push_back({x, y, z});
-    return cellArray(cells);
-  }
-
-  // The cells of each target shape, in the scene's order.
-  std::vector<py::array_t<int32_t>> targets() const {
-    std::vector<py::array_t<int32_t>> out;
-    for (const target::Target& shape : scene_.targets) {
-      out.push_back(cellArray(frontend::unwrap(shape.cells())));
-    }
-    return out;
-  }
-
-  void save(const std::filesystem::path& path) const {
-    io::Scene written = scene_;
-    // Python says nothing on standard error: the grid is in the file, for Python to read.
-    frontend::declareGridForVisibleSim(written, path.string(), frontend::Reporter(/*quiet=*/true));
-    frontend::check(io::writeScene(written, path));
-  }
-
-  Scene copy() const { return *this; }
-
-  std::string repr() const {
-    return fmt::format(
-        "<datomsim.Scene {}{} modules{}>", scene_.name ? *scene_.name + ": " : "", size(),
-        scene_.targets.empty() ? "" : fmt::format(", {} target(s)", scene_.targets.size()));
-  }
-
- private:
-  io::Scene scene_;
-};
-
-Scene sceneOf(world::World world, std::string name) {
-  world.latchAllNeighbours();
-  io::Scene scene;
-  scene.world = std::move(world);
-  scene.name = std::move(name);
-  return Scene(std::move(scene));
 }
 
 // {"cells": (n, 3), "distances": (n,), "path": (p, 3), "goal": (3,)}: `reach --out` as arrays.

@@ -73,6 +73,10 @@ void ModuleArguments::addTo(CLI::App& command) {
       ->capture_default_str();
 }
 
+world::ModuleKind kindFor(const std::string& module, const io::Scene& scene) {
+  return module.empty() ? scene.moduleKind : *world::moduleKindNamed(module);
+}
+
 void refuseOtherKindsOptions(const CLI::App& command, world::ModuleKind kind,
                              std::initializer_list<const char*> datomOptions) {
   if (kind == world::ModuleKind::kCatom3D) {

@@ -16,7 +16,6 @@
 namespace datomsim::app {
 
 using frontend::describe;
-using frontend::kindFor;
 using frontend::MotionModel;
 using frontend::parseCell;
 using frontend::parseRuleOptions;
@@ -29,6 +28,9 @@ extern const CLI::Validator kFinite;
 // Finite numbers >= 0, and > 0.
 extern const CLI::Validator kNonNegative;
 extern const CLI::Validator kPositive;
+
+// The kind --module names, or the scene's when it names none (the name checked by the option).
+world::ModuleKind kindFor(const std::string& module, const io::Scene& scene);
 
 // --rules, --attachment and --connectivity, into `rules`.
 void addRuleOptions(CLI::App& command, RuleArguments& rules);

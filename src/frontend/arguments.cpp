@@ -53,8 +53,4 @@ std::string describe(const MotionModel& model) {
                      model.datom.attachment ? "on" : "off");
 }
 
-world::ModuleKind kindFor(const std::string& module, const io::Scene& scene) {
-  return module.empty() ? scene.moduleKind : *world::moduleKindNamed(module);
-}
-
 }  // namespace datomsim::frontend

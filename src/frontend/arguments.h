@@ -7,7 +7,6 @@
 
 #include "catom3d/rolling.h"
 #include "geometry/cell.h"
-#include "io/scene.h"
 #include "motion/motion.h"
 #include "world/module_kind.h"
 
@@ -43,8 +42,5 @@ struct MotionModel {
 // "datom, rules paper, attachment on" or "catom3d, symmetric rolls": what pictures and
 // reports name.
 std::string describe(const MotionModel& model);
-
-// The kind `module` names, or the scene's when it is empty (the name already checked).
-world::ModuleKind kindFor(const std::string& module, const io::Scene& scene);
 
 }  // namespace datomsim::frontend

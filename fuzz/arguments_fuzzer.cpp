@@ -6,19 +6,20 @@
 #include <map>
 #include <string>
 
-#include "arguments.h"
 #include "datomsim/parameters.h"
+#include "frontend/arguments.h"
+#include "frontend/usage_error.h"
 #include "target/csg_parser.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    (void)datomsim::app::parseCell("--goal", text);
-  } catch (const datomsim::app::UsageError&) {
+    (void)datomsim::frontend::parseCell("--goal", text);
+  } catch (const datomsim::frontend::UsageError&) {
   }
   try {
-    (void)datomsim::app::parseSeed("--seed", text);
-  } catch (const datomsim::app::UsageError&) {
+    (void)datomsim::frontend::parseSeed("--seed", text);
+  } catch (const datomsim::frontend::UsageError&) {
   }
   using datomsim::Parameter;
   static const std::vector<Parameter> declared = {

@@ -4,12 +4,7 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <string_view>
-#include <vector>
-
-#include "geometry/cell_text.h"
-#include "world/bounds.h"
 
 namespace datomsim::app {
 
@@ -46,46 +41,21 @@ CLI::Validator numberAtLeast(double low, bool strictly, const char* name) {
 const CLI::Validator kNonNegative = numberAtLeast(0, false, "NUMBER>=0");
 const CLI::Validator kPositive = numberAtLeast(0, true, "NUMBER>0");
 
-uint64_t parseSeed(const std::string& option, const std::string& text) {
-  uint64_t value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || text.empty()) {
-    throw UsageError(
-        fmt::format("{} \"{}\" must be an integer from 0 to {}", option, text, UINT64_MAX));
-  }
-  return value;
-}
-
-geometry::Cell parseCell(const std::string& option, const std::string& text) {
-  const std::optional<geometry::Cell> cell = geometry::cellFromText(text);
-  if (!cell) throw UsageError(option + " \"" + text + "\" must be three integers x,y,z");
-  for (const int32_t value : {cell->x, cell->y, cell->z}) {
-    // Sizes reach the limit itself; cells stop one short (docs/limits.md).
-    if (value < -world::kCoordinateLimit || value > world::kCoordinateLimit) {
-      throw UsageError(
-          fmt::format("{} \"{}\": {} is outside the supported coordinate range, "
-                      "-{} to {} (docs/limits.md)",
-                      option, text, value, world::kCoordinateLimit, world::kCoordinateLimit - 1));
-    }
-  }
-  return *cell;
-}
-
-motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment,
-                                     const std::string& connectivity) {
-  motion::RuleOptions options;
-  options.rules = rules == "strict" ? motion::RuleSet::kStrict : motion::RuleSet::kPaper;
-  options.attachment = attachment != "off";
-  options.connectivity = connectivity == "on";
-  return options;
-}
-
-std::string describe(const MotionModel& model) {
-  if (model.kind == world::ModuleKind::kCatom3D) {
-    return fmt::format("catom3d, {} rolls", catom3d::toString(model.rolling));
-  }
-  return fmt::format("rules {}, attachment {}", motion::toString(model.datom.rules),
-                     model.datom.attachment ? "on" : "off");
+void addRuleOptions(CLI::App& command, RuleArguments& rules) {
+  command.add_option("--rules", rules.rules, "Rule table: paper (double deformation) or strict")
+      ->check(CLI::IsMember({"paper", "strict"}))
+      ->capture_default_str();
+  command
+      .add_option("--attachment", rules.attachment,
+                  "Refuse deformations that would make a module let go: on or off")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  command
+      .add_option("--connectivity", rules.connectivity,
+                  "Refuse motions and deformations that would cut modules off from the "
+                  "ensemble: on or off")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
 }
 
 void ModuleArguments::addTo(CLI::App& command) {

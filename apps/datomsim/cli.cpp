@@ -70,19 +70,20 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
                "Say nothing but errors: no \"wrote FILE\" lines and no notes on standard error");
   // --quiet may come after the subcommand too.
   app.fallthrough();
-  app::setQuiet(false);
-  // Before any subcommand's callback runs: CLI11 runs them once the whole line is parsed.
-  app.parse_complete_callback([&quiet] { app::setQuiet(quiet); });
+  // What the subcommands tell a person besides errors; it outlives their callbacks, and takes
+  // --quiet before any of them runs: CLI11 runs them once the whole line is parsed.
+  frontend::Reporter reporter;
+  app.parse_complete_callback([&quiet, &reporter] { reporter = frontend::Reporter(quiet); });
   app::addGeometryCommand(app);
-  app::addSceneCommands(app);
-  app::addMotionCommands(app);
-  app::addCompareCommand(app);
-  app::addRunCommand(app, programs);
-  app::addDemoCommand(app);
-  app::addViewCommand(app);
-  app::addVideoCommand(app);
-  app::addSweepCommand(app);
-  app::addMeshCommand(app);
+  app::addSceneCommands(app, reporter);
+  app::addMotionCommands(app, reporter);
+  app::addCompareCommand(app, reporter);
+  app::addRunCommand(app, reporter, programs);
+  app::addDemoCommand(app, reporter);
+  app::addViewCommand(app, reporter);
+  app::addVideoCommand(app, reporter);
+  app::addSweepCommand(app, reporter);
+  app::addMeshCommand(app, reporter);
   app::addCompletionCommand(app);
 
   // A first word that names no subcommand: say so, and which one was meant.
@@ -103,10 +104,10 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
     fmt::print(stderr, "datomsim: error: {}\nRun with --help for more information.\n",
                error.what());
     return 1;
-  } catch (const app::UsageError& error) {
+  } catch (const frontend::UsageError& error) {
     fmt::print(stderr, "datomsim: error: {}\n", error.what());
     return 1;
-  } catch (const app::CheckFailed& error) {
+  } catch (const frontend::CheckFailed& error) {
     fmt::print(stderr, "datomsim: {}\n", error.what());
     return 1;
   } catch (const std::bad_alloc&) {

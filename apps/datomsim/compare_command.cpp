@@ -11,9 +11,9 @@
 #include "arguments.h"
 #include "catom3d/rolling.h"
 #include "commands.h"
+#include "frontend/motion_json.h"
 #include "geometry/lattice.h"
 #include "io/scene_file.h"
-#include "motion_json.h"
 #include "render/distance_map.h"
 
 namespace datomsim::app {
@@ -54,7 +54,7 @@ nlohmann::ordered_json sideJson(const Side& side, const std::optional<Cell>& sta
 
 }  // namespace
 
-void addCompareCommand(CLI::App& app) {
+void addCompareCommand(CLI::App& app, const Reporter& reporter) {
   struct Arguments {
     std::string scene, goal, start, dir;
     RuleArguments rules;
@@ -74,7 +74,7 @@ void addCompareCommand(CLI::App& app) {
                       "else the one at the goal (as for reach)");
   command->add_option("-o,--out-dir", args->dir, "Directory for the results (made if missing)")
       ->required();
-  args->rules.addTo(*command);
+  addRuleOptions(*command, args->rules);
   command
       ->add_option("--rolling", args->rolling,
                    "The 3D Catom's rules: symmetric or visiblesim (docs/catom3d.md)")
@@ -84,7 +84,7 @@ void addCompareCommand(CLI::App& app) {
       ->check(CLI::Range(2, 256));
   addExample(*command,
              "compare scenes/paper-arch-hole1.json --goal 6,5,2 --start 0,0,2 -o compare-arch1");
-  command->callback([args] {
+  command->callback([args, &reporter] {
     namespace fs = std::filesystem;
     const fs::path dir = args->dir;
     if (fs::exists(dir) && !fs::is_directory(dir)) {
@@ -150,9 +150,13 @@ void addCompareCommand(CLI::App& app) {
     const std::string datomFile = (dir / "datom-reach.json").string();
     const std::string catomFile = (dir / "catom3d-reach.json").string();
     for (const auto& [side, file] : {std::pair{&datom, datomFile}, std::pair{&catom, catomFile}}) {
-      writeOutput(file, [&](std::FILE* out) {
-        return writeReachJson(side->reached->map, side->reached->path, side->model, out);
-      });
+      writeOutput(
+          file,
+          [&](std::FILE* out) {
+            return frontend::writeReachJson(side->reached->map, side->reached->path, side->model,
+                                            out);
+          },
+          reporter);
     }
 
     std::vector<render::DistanceMapPicture> pictures;
@@ -172,7 +176,7 @@ void addCompareCommand(CLI::App& app) {
     }
     const std::string png = (dir / "compare.png").string();
     check(render::writeSideBySidePng(pictures, png));
-    reportWritten(png, "the two maps side by side");
+    reporter.reportWritten(png, "the two maps side by side");
 
     nlohmann::ordered_json summary;
     summary["scene"] = args->scene;
@@ -197,7 +201,7 @@ void addCompareCommand(CLI::App& app) {
                                  {"rolls_in_need_a_solid_cell", needsSolid},
                                  {"rolls_in_need_a_cell_holding_a_module", needsEmptied},
                                  {"rolls_in_start_where_the_catom_never_is", cutOff}};
-    writeOutput((dir / "compare.json").string(), summary.dump(2) + "\n");
+    writeOutput((dir / "compare.json").string(), summary.dump(2) + "\n", reporter);
 
     // For a person: the table docs/catom3d.md gives.
     std::string table = fmt::format("{:<38} {:>8} {:>8}\n", "", "datom", "catom3d");

@@ -10,6 +10,7 @@
 #include "experiment/paper.h"
 #include "experiment/run.h"
 #include "export/viewer_page.h"
+#include "frontend/run_json.h"
 #include "io/scene_file.h"
 #include "render/distance_map.h"
 #include "scene/paper_arch.h"
@@ -27,7 +28,7 @@ nlohmann::ordered_json cellsJson(const std::vector<geometry::Cell>& cells) {
 
 }  // namespace
 
-void addDemoCommand(CLI::App& app) {
+void addDemoCommand(CLI::App& app, const Reporter& reporter) {
   struct Arguments {
     std::string out = "datomsim-demo";
     bool noVideo = false;
@@ -41,7 +42,7 @@ void addDemoCommand(CLI::App& app) {
                     "Skip the videos of the two paper runs (about a minute and a half of drawing "
                     "in headless Chromium)");
   addExample(*command, "demo -o demo-output");
-  command->callback([args] {
+  command->callback([args, &reporter] {
     const std::filesystem::path folder = args->out;
     std::error_code error;
     std::filesystem::create_directories(folder, error);
@@ -51,7 +52,7 @@ void addDemoCommand(CLI::App& app) {
     const auto directory = exporting::executableDirectory();
     const auto bundle = directory.ok() ? exporting::loadViewerBundle("", *directory)
                                        : Result<std::string>(Error{directory.error()});
-    if (!bundle.ok()) note("no viewer pages: " + bundle.error());
+    if (!bundle.ok()) reporter.note("no viewer pages: " + bundle.error());
 
     const motion::RuleTable table;
     const experiment::PaperExperiment experiment = unwrap(experiment::runPaperExperiment(table));
@@ -72,16 +73,19 @@ void addDemoCommand(CLI::App& app) {
       // The mobile is not among the fixed modules.
       writePictures(result.fixedWorld, true, result.distances, result.path, title,
                     {.png = (folder / (name + "-distances.png")).string(),
-                     .svg = (folder / (name + "-distances.svg")).string()});
-      writeOutput((folder / (name + "-trace.jsonl")).string(), result.run.trace);
-      writeOutput((folder / (name + "-run.json")).string(),
-                  runJson(*algorithms::programInfo(algorithms::kFollowGradient), result.run));
+                     .svg = (folder / (name + "-distances.svg")).string()},
+                    reporter);
+      writeOutput((folder / (name + "-trace.jsonl")).string(), result.run.trace, reporter);
+      writeOutput(
+          (folder / (name + "-run.json")).string(),
+          frontend::runJson(*algorithms::programInfo(algorithms::kFollowGradient), result.run),
+          reporter);
       if (bundle.ok()) {
         const exporting::ViewerPage page = {
             title, result.run.trace,
             exporting::overlayJson(result.distances.sorted(), result.path, scene::kPaperGoal)};
         check(exporting::writeViewerPage(folder / (name + "-viewer.html"), *bundle, page));
-        reportWritten((folder / (name + "-viewer.html")).string());
+        reporter.reportWritten((folder / (name + "-viewer.html")).string());
         videos.emplace_back(folder / (name + "-run.mp4"), page);
       }
 
@@ -118,13 +122,14 @@ void addDemoCommand(CLI::App& app) {
     request.trace = false;
     const experiment::RunResult sequential =
         unwrap(experiment::runProgram(std::move(build.world), table, request));
-    writeOutput((folder / "arch-build-trace.jsonl").string(), built.trace);
+    writeOutput((folder / "arch-build-trace.jsonl").string(), built.trace, reporter);
     writeOutput((folder / "arch-build-run.json").string(),
-                runJson(*algorithms::programInfo(algorithms::kReconfigure), built));
+                frontend::runJson(*algorithms::programInfo(algorithms::kReconfigure), built),
+                reporter);
     if (bundle.ok()) {
       check(exporting::writeViewerPage(folder / "arch-build-viewer.html", *bundle,
                                        {request.description, built.trace, ""}));
-      reportWritten((folder / "arch-build-viewer.html").string());
+      reporter.reportWritten((folder / "arch-build-viewer.html").string());
     }
     const double makespan = double(built.statistics.lastMotionEnd) / kSecond;
     const double baseline = double(sequential.statistics.lastMotionEnd) / kSecond;
@@ -136,13 +141,13 @@ void addDemoCommand(CLI::App& app) {
     arch["sequential_makespan_s"] = baseline;
     arch["speed_up"] = makespan > 0 ? baseline / makespan : 0.0;
     summary["arch_build"] = std::move(arch);
-    writeOutput((folder / "summary.json").string(), summary.dump(2) + "\n");
+    writeOutput((folder / "summary.json").string(), summary.dump(2) + "\n", reporter);
 
     // Short videos of the paper's runs, small so that they are quick to draw: 640x360, 12 frames
     // a second, at most 15 s. Without Chromium or ffmpeg the demo says so and does without.
     if (args->noVideo) videos.clear();
     if (const Status tools = video::findVideoTools({}); !videos.empty() && !tools.ok()) {
-      note("no videos: " + tools.error());
+      reporter.note("no videos: " + tools.error());
       videos.clear();
     }
     for (const auto& [file, page] : videos) {
@@ -153,9 +158,9 @@ void addDemoCommand(CLI::App& app) {
       recording.height = 360;
       recording.fps = 12;
       recording.longest = 15;
-      recording.progress = videoProgress(file.filename().string());
+      recording.progress = videoProgress(file.filename().string(), reporter);
       const video::VideoSummary made = unwrap(video::recordVideo(recording));
-      reportWritten(file.string(), describeVideo(made, recording));
+      reporter.reportWritten(file.string(), describeVideo(made, recording));
     }
     fmt::print("The paper's experiment, files in {}/:\n", args->out);
     for (const experiment::PaperScene& result : experiment.scenes) {

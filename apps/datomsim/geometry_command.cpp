@@ -5,37 +5,9 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "datom/dimensions.h"
-#include "datom/linkage.h"
+#include "frontend/geometry_json.h"
 
 namespace datomsim::app {
-
-nlohmann::ordered_json geometryJson(double radius, double thickness,
-                                    const std::optional<double>& fraction) {
-  const datom::Dimensions d = unwrap(datom::dimensionsFor(radius, thickness));
-  nlohmann::ordered_json out = {
-      {"r", d.radius()},
-      {"t", d.thickness()},
-      {"c", d.connectorWidth()},
-      {"e", d.linkLength()},
-      {"a", d.amplitude()},
-      {"r_prime", d.correctedRadius()},
-      {"c_prime", d.correctedConnectorWidth()},
-      {"e_prime", d.correctedLinkLength()},
-      {"t_max", d.maxThickness()},
-      {"core_edge", d.coreEdge()},
-  };
-  if (fraction) {
-    const datom::Linkage linkage = unwrap(datom::solveLinkage(d, *fraction));
-    out["fraction"] = linkage.fraction;
-    out["travel"] = linkage.travel;
-    out["q0"] = linkage.angles.q0;
-    out["q1"] = linkage.angles.q1;
-    out["p0"] = linkage.angles.p0;
-    out["connector_turn"] = linkage.connectorTurn;
-  }
-  return out;
-}
 
 void addGeometryCommand(CLI::App& app) {
   struct Arguments {
@@ -63,7 +35,8 @@ void addGeometryCommand(CLI::App& app) {
   command->add_flag("--json", args->json, "Print one JSON object");
   addExample(*command, "geometry --radius 1 --thickness 0.1 --fraction 0.5");
   command->callback([args] {
-    const nlohmann::ordered_json out = geometryJson(args->radius, args->thickness, args->fraction);
+    const nlohmann::ordered_json out =
+        frontend::geometryJson(args->radius, args->thickness, args->fraction);
     if (args->json) {
       fmt::print("{}\n", out.dump());
       return;

@@ -12,7 +12,7 @@
 
 namespace datomsim::app {
 
-void addMeshCommand(CLI::App& app) {
+void addMeshCommand(CLI::App& app, const Reporter& reporter) {
   struct Arguments {
     double radius = 0;
     double thickness = 0;
@@ -37,7 +37,7 @@ void addMeshCommand(CLI::App& app) {
                       "How far the piston is compressed: 0 (rest) .. 1 (default 1)");
   command->add_option("-o,--out", args->out, "Mesh file: .obj, .stl or .glb")->required();
   addExample(*command, "mesh --radius 1 --thickness 0.1 --piston 4 --fraction 1 -o datom.glb");
-  command->callback([args] {
+  command->callback([args, &reporter] {
     // The output's format first: a wrong extension is the cheapest mistake to report.
     unwrap(exporting::meshFormatOf(args->out));
     if (!std::isfinite(args->radius) || args->radius <= 0) {
@@ -70,9 +70,10 @@ void addMeshCommand(CLI::App& app) {
         fmt::format("Datom, r = {}, t = {}, {}", args->radius, args->thickness, state);
     check(exporting::writeMesh(mesh, args->out, comment));
     const auto [low, high] = mesh.bounds();
-    reportWritten(args->out, fmt::format("{} parts, {} triangles, {:.4g} x {:.4g} x {:.4g}",
-                                         mesh.groups.size(), mesh.triangleCount(), high.x - low.x,
-                                         high.y - low.y, high.z - low.z));
+    reporter.reportWritten(
+        args->out,
+        fmt::format("{} parts, {} triangles, {:.4g} x {:.4g} x {:.4g}", mesh.groups.size(),
+                    mesh.triangleCount(), high.x - low.x, high.y - low.y, high.z - low.z));
   });
 }
 

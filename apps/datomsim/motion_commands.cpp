@@ -11,12 +11,11 @@
 #include "arguments.h"
 #include "catom3d/rolling_reach.h"
 #include "commands.h"
-#include "experiment/run.h"
+#include "frontend/motion_json.h"
 #include "geometry/lattice.h"
 #include "io/scene_file.h"
 #include "motion/bidirectionality.h"
 #include "motion/reach.h"
-#include "motion_json.h"
 
 namespace datomsim::app {
 namespace {
@@ -41,7 +40,7 @@ void verifyRolls(const world::World& world, const std::vector<std::string>& rule
   if (failures > 0) throw CheckFailed(fmt::format("{} counterexamples to theorem 2", failures));
 }
 
-void addReach(CLI::App& app) {
+void addReach(CLI::App& app, const Reporter& reporter) {
   struct Arguments {
     std::string scene, goal, start, out;
     PictureRequest pictures;
@@ -57,7 +56,7 @@ void addReach(CLI::App& app) {
   command->add_option("--start", args->start,
                       "Also follow the gradient from this cell and draw the path; the mobile is "
                       "the module there, else the one at the goal (as for run)");
-  args->rules.addTo(*command);
+  addRuleOptions(*command, args->rules);
   args->module.addTo(*command);
   addOutputOption(*command, args->out);
   PictureRequest& asked = args->pictures;
@@ -84,7 +83,7 @@ void addReach(CLI::App& app) {
       ->capture_default_str();
   addExample(*command,
              "reach scenes/paper-arch-hole1.json --goal 6,5,2 --start 0,0,2 --png arch1.png");
-  command->callback([args] {
+  command->callback([args, &reporter] {
     const PictureRequest& pictures = args->pictures;
     // Pictures are files (never standard output): only --out may be "-".
     std::vector<NamedPath> outputs = {{"--out", args->out}};
@@ -110,15 +109,18 @@ void addReach(CLI::App& app) {
     const ReachOutput reached = reachOnScene(std::move(scene), goal, start, model);
     const std::string title = fmt::format("{}: distances to {} ({})", args->scene,
                                           geometry::toString(goal), describe(model));
-    writePictures(reached.fixed, reached.mobileTakenOut, reached.map, reached.path, title,
-                  pictures);
-    writeOutput(args->out, [&](std::FILE* file) {
-      return writeReachJson(reached.map, reached.path, model, file);
-    });
+    writePictures(reached.fixed, reached.mobileTakenOut, reached.map, reached.path, title, pictures,
+                  reporter);
+    writeOutput(
+        args->out,
+        [&](std::FILE* file) {
+          return frontend::writeReachJson(reached.map, reached.path, model, file);
+        },
+        reporter);
   });
 }
 
-void addMoves(CLI::App& app) {
+void addMoves(CLI::App& app, const Reporter& reporter) {
   struct Arguments {
     std::string scene, at, out, format = "auto";
     RuleArguments rules;
@@ -130,7 +132,7 @@ void addMoves(CLI::App& app) {
   command->add_option("scene", args->scene, "Scene file (.xml or .json)")->required();
   command->add_option("--at", args->at, "The mobile's cell x,y,z; a module there is the mobile")
       ->required();
-  args->rules.addTo(*command);
+  addRuleOptions(*command, args->rules);
   args->module.addTo(*command);
   command
       ->add_option("--format", args->format,
@@ -140,7 +142,7 @@ void addMoves(CLI::App& app) {
       ->capture_default_str();
   addOutputOption(*command, args->out);
   addExample(*command, "moves scenes/paper-arch-hole1.json --at 2,2,3");
-  command->callback([args] {
+  command->callback([args, &reporter] {
     refuseClashes({{"scene", args->scene}}, {{"--out", args->out}});
     const geometry::Cell at = parseCell("--at", args->at);
     const io::Scene scene = unwrap(io::readScene(args->scene));
@@ -156,12 +158,17 @@ void addMoves(CLI::App& app) {
     if (model.kind == world::ModuleKind::kCatom3D) {
       const catom3d::RollTable table;
       const auto rolls = catom3d::evaluateAll(scene.world, table, where, model.rolling);
-      writeOutput(args->out, asTable ? rollsTable(at, rolls, model) : rollsJson(at, rolls, model));
+      writeOutput(
+          args->out,
+          asTable ? frontend::rollsTable(at, rolls, model) : frontend::rollsJson(at, rolls, model),
+          reporter);
       return;
     }
     const motion::RuleTable table;
     const auto moves = motion::evaluateAll(scene.world, table, where, model.datom);
-    writeOutput(args->out, asTable ? movesTable(at, moves) : movesJson(at, moves));
+    writeOutput(args->out,
+                asTable ? frontend::movesTable(at, moves) : frontend::movesJson(at, moves),
+                reporter);
   });
 }
 
@@ -229,59 +236,9 @@ void addVerify(CLI::App& app) {
 
 }  // namespace
 
-ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
-                         const std::optional<geometry::Cell>& start,
-                         const motion::RuleOptions& options) {
-  const world::ModuleKind kind = scene.moduleKind;
-  return reachOnScene(std::move(scene), goal, start, MotionModel{kind, options, {}});
-}
-
-ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
-                         const std::optional<geometry::Cell>& start, const MotionModel& model) {
-  // The mobile, chosen as `run` chooses it, is not part of the fixed world.
-  const experiment::MobileChoice mobile =
-      unwrap(experiment::chooseMobile(scene.world, goal, start));
-  if (mobile.module) check(scene.world.remove(*mobile.module));
-  // A goal next to no module is reached by nothing: say so rather than draw an empty map.
-  bool touches = false;
-  for (int d = 0; d < geometry::kDirectionCount && !touches; ++d) {
-    touches = scene.world.moduleAt(goal + geometry::neighbourOffset(d)) != nullptr;
-  }
-  if (!touches && scene.world.isInside(goal)) {
-    throw UsageError(
-        fmt::format("goal {} touches no module: no module can reach it (a goal "
-                    "must be next to a module of the scene)",
-                    geometry::toString(goal)));
-  }
-  std::vector<geometry::Cell> path;
-  if (model.kind == world::ModuleKind::kCatom3D) {
-    const catom3d::RollTable table;
-    motion::DistanceMap map = unwrap(catom3d::reach(scene.world, table, goal, model.rolling));
-    if (start) {
-      path.push_back(*start);
-      for (const catom3d::RollMotion& m :
-           unwrap(catom3d::followGradient(scene.world, table, map, *start, model.rolling))) {
-        path.push_back(m.goal);
-      }
-    }
-    return {std::move(scene.world), mobile.module.has_value(), std::move(map), std::move(path)};
-  }
-  const motion::RuleOptions& options = model.datom;
-  const motion::RuleTable table;
-  motion::DistanceMap map = unwrap(motion::reach(scene.world, table, goal, options));
-  if (start) {
-    path.push_back(*start);
-    for (const motion::Motion& m :
-         unwrap(motion::followGradient(scene.world, table, map, *start))) {
-      path.push_back(m.goal);
-    }
-  }
-  return {std::move(scene.world), mobile.module.has_value(), std::move(map), std::move(path)};
-}
-
-void addMotionCommands(CLI::App& app) {
-  addReach(app);
-  addMoves(app);
+void addMotionCommands(CLI::App& app, const Reporter& reporter) {
+  addReach(app, reporter);
+  addMoves(app, reporter);
   addVerify(app);
 }
 

@@ -7,100 +7,11 @@
 
 #include "algorithms/registry.h"
 #include "commands.h"
-#include "experiment/run.h"
+#include "frontend/run_json.h"
 #include "io/scene_file.h"
-#include "json_stream.h"
 #include "sim/statistics.h"
-#include "target/target.h"
 
 namespace datomsim::app {
-
-namespace {
-
-void streamRunJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
-                   const std::map<std::string, std::string>& parameters,
-                   JsonObjectStream::Emit emit) {
-  const sim::Statistics& statistics = result.statistics;
-  auto seconds = [](Time t) { return double(t) / kSecond; };
-  JsonObjectStream out(std::move(emit));
-  out.field("program", info.name);
-  if (result.reshape) {
-    out.field("success", result.reshape->success);
-    if (!result.reshape->success) out.field("reason", result.reshape->reason);
-    out.cells("final", result.reshape->final);
-    out.cells("missing", result.reshape->missing);
-    out.cells("extra", result.reshape->extra);
-  } else if (info.entry) {
-    // A public-API program: its parameters, then what its modules reported, key by key.
-    nlohmann::ordered_json given = nlohmann::ordered_json::object();
-    for (const auto& [name, value] : parameters) given[name] = value;
-    out.field("parameters", given);
-    out.field("stopped_at_limit", result.stoppedAtLimit);
-    if (result.reports) {
-      for (const std::string& key : result.reports->keys()) {
-        out.cellValues(key, [&](const JsonObjectStream::CellValue& write) {
-          result.reports->forEach(key, write);
-        });
-      }
-    }
-  } else if (!info.needsGoal) {
-    nlohmann::ordered_json walkers = nlohmann::ordered_json::array();
-    for (const algorithms::WalkerOutcome& walker : result.walkers) {
-      walkers.push_back({{"id", walker.id.value},
-                         {"steps", walker.steps},
-                         {"refusals", walker.refusals},
-                         {"finished", walker.finished},
-                         {"failure", walker.failure ? nlohmann::ordered_json(*walker.failure)
-                                                    : nlohmann::ordered_json()}});
-    }
-    out.field("walkers", walkers);
-  } else if (!info.mobileWalks) {
-    // Exactly as `reach` writes its distances.
-    out.cellValues("distances", result.distances);
-  } else {
-    out.cells("path", result.path);
-    out.field("arrived", result.arrived.value_or(false));
-  }
-  if (result.failure && !result.reshape) out.field("reason", *result.failure);
-  out.field("motions", statistics.motions);
-  out.field("makespan_s", seconds(statistics.lastMotionEnd));
-  out.field("messages", statistics.messages());
-  out.field("max_concurrent_motions", statistics.maxConcurrentMotions);
-  out.field("mean_concurrent_motions", statistics.meanConcurrentMotions());
-  nlohmann::ordered_json refusals = nlohmann::ordered_json::object();
-  for (const auto& [reason, count] : statistics.refusalsByReason) refusals[reason] = count;
-  out.field("refusals_by_reason", refusals);
-  out.field("reservation_wait_s", seconds(statistics.reservationWait));
-  nlohmann::ordered_json messages = nlohmann::ordered_json::object();
-  for (const auto& [type, count] : statistics.messagesByType) messages[type] = count;
-  out.field("messages_by_type", messages);
-  out.field("events", statistics.events());
-  nlohmann::ordered_json byKind = nlohmann::ordered_json::object();
-  for (int kind = 0; kind < sim::kEventKindCount; ++kind) {
-    byKind[sim::toString(sim::EventKind(kind))] = statistics.eventsByKind[size_t(kind)];
-  }
-  out.field("events_by_kind", byKind);
-  out.field("deformations", statistics.deformations);
-  out.field("sim_time_s", seconds(statistics.simulatedTime));
-  // Wall time stays out of the JSON, which is the same for the same inputs; --stats prints it.
-  out.close();
-}
-
-}  // namespace
-
-std::string runJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
-                    const std::map<std::string, std::string>& parameters) {
-  std::string text;
-  streamRunJson(info, result, parameters, [&](std::string_view piece) { text += piece; });
-  return text;
-}
-
-Status writeRunJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
-                    const std::map<std::string, std::string>& parameters, std::FILE* file) {
-  FileEmitter emitter{file};
-  streamRunJson(info, result, parameters, emitter.emit());
-  return emitter.status("the result");
-}
 
 namespace {
 
@@ -131,7 +42,7 @@ void printStatistics(const sim::Statistics& statistics) {
 
 }  // namespace
 
-void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
+void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const ProgramEntry> added) {
   using Arguments = RunArguments;
   auto args = std::make_shared<Arguments>();
   CLI::App* command =
@@ -150,7 +61,7 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
   command->add_option("--start", args->start,
                       "The mobile's start x,y,z: the module there, else the one at the goal moved "
                       "there, else a new module");
-  args->rules.addTo(*command);
+  addRuleOptions(*command, args->rules);
   command
       ->add_option("--module", args->module,
                    "The modules: datom or catom3d, 3D Catoms that roll (default: the scene "
@@ -203,7 +114,7 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
   addExample(*command,
              "run scenes/paper-arch-hole1.json --program follow-gradient --goal 6,5,2 --start "
              "0,0,2 --trace arch1.jsonl");
-  command->callback([args, command, added] {
+  command->callback([args, command, added, &reporter] {
     std::vector<NamedPath> outputs = {{"--out", args->out}};
     if (!args->trace.empty()) outputs.push_back({"--trace", args->trace});
     refuseClashes({{"scene", args->scene}, {"--target", args->target}}, outputs);
@@ -213,89 +124,16 @@ void addRunCommand(CLI::App& app, std::span<const ProgramEntry> added) {
     refuseOtherKindsOptions(*command, kindFor(args->module, scene), {"--rules", "--attachment"});
     const RunOutput run = runOnScene(std::move(scene), args->scene, *args, added);
     // A failed run is written like a successful one, to be looked at and counted; then it fails.
-    if (!args->trace.empty()) writeOutput(args->trace, run.result.trace);
-    writeOutput(args->out, [&](std::FILE* file) {
-      return writeRunJson(run.info, run.result, run.parameters, file);
-    });
+    if (!args->trace.empty()) writeOutput(args->trace, run.result.trace, reporter);
+    writeOutput(
+        args->out,
+        [&](std::FILE* file) {
+          return frontend::writeRunJson(run.info, run.result, run.parameters, file);
+        },
+        reporter);
     if (args->stats) printStatistics(run.result.statistics);
     if (run.failure) throw UsageError(*run.failure);
   });
-}
-
-RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArguments& args,
-                     std::span<const ProgramEntry> added) {
-  experiment::RunRequest request;
-  if (!args.module.empty()) {
-    const auto kind = world::moduleKindNamed(args.module);
-    if (!kind) throw UsageError("--module: " + args.module + " not in {datom,catom3d}");
-    scene.moduleKind = *kind;
-  }
-  const auto rolling = catom3d::rollRulesNamed(args.rolling);
-  if (!rolling) throw UsageError("--rolling: " + args.rolling + " not in {symmetric,visiblesim}");
-  request.simulation.moduleKind = scene.moduleKind;
-  request.simulation.rolling = *rolling;
-  request.program = args.program;
-  request.added = added;
-  // The command line's --program check, for callers that did not pass through it (Python).
-  const Result<algorithms::ProgramInfo> info = algorithms::programInfo(args.program, added);
-  if (!info) {
-    std::string names;
-    for (const algorithms::ProgramInfo& known : algorithms::programs(added)) {
-      names += (names.empty() ? "" : ",") + std::string(known.name);
-    }
-    throw UsageError(fmt::format("--program: {} not in {{{}}}", args.program, names));
-  }
-  if (!args.goal.empty()) request.goal = parseCell("--goal", args.goal);
-  if (!args.start.empty()) request.start = parseCell("--start", args.start);
-  request.simulation.rules = args.rules.options();
-  request.simulation.connectivity = request.simulation.rules.connectivity;
-  if (info->reshapes) {
-    // Reconfiguration keeps the ensemble in one piece unless told otherwise; the engine checks
-    // it live, and the modules' gradient judges rules without it (docs/reconfiguration.md).
-    request.simulation.connectivity = args.rules.connectivity == "on" || !args.connectivityGiven;
-    request.simulation.rules.connectivity = request.simulation.connectivity;
-  }
-  if (args.maxMotions < 0)
-    throw UsageError(fmt::format("--max-motions {}: 1 or more", args.maxMotions));
-  request.simulation.maxMotions = args.maxMotions;
-  request.simulation.seed = parseSeed("--seed", args.seed);
-  for (const auto& [option, value] :
-       {std::pair{"--delay-ms", args.delayMs}, {"--jitter-ms", args.jitterMs}}) {
-    if (!std::isfinite(value) || value < 0) {
-      throw UsageError(fmt::format("{} {}: a number of milliseconds, 0 or more", option, value));
-    }
-  }
-  request.simulation.messageDelay = Time(args.delayMs * kMillisecond);
-  request.simulation.messageJitter = Time(args.jitterMs * kMillisecond);
-  request.trace = args.wantTrace || !args.trace.empty();
-  request.description = fmt::format("{} on {}", args.program, sceneName);
-  const std::vector<target::Target>& targets =
-      args.target.empty() ? scene.targets : unwrap(io::readScene(args.target)).targets;
-  if (!args.target.empty() && targets.empty()) throw UsageError(args.target + " has no target");
-  for (const target::Target& target : targets) request.targets.push_back(unwrap(target.cells()));
-  if (args.timeoutS > 0) request.reshape.timeout = Time(args.timeoutS * kSecond);
-  if (args.untilS > 0) request.until = Time(args.untilS * kSecond);
-  // The scene's parameters for this program, then the command line's over them.
-  if (const auto inScene = scene.parameters.find(args.program); inScene != scene.parameters.end()) {
-    request.parameters = inScene->second;
-  }
-  if (!args.root.empty()) request.parameters["root"] = args.root;
-  for (const std::string& pair : args.parameters) {
-    const size_t equals = pair.find('=');
-    if (equals == std::string::npos || equals == 0) {
-      throw UsageError("--param " + pair + ": expected KEY=VALUE");
-    }
-    request.parameters[pair.substr(0, equals)] = pair.substr(equals + 1);
-  }
-  const motion::RuleTable table;
-  RunOutput output{*info, unwrap(experiment::runProgram(std::move(scene.world), table, request)),
-                   request.parameters, std::nullopt};
-  if (output.result.reshape && !output.result.reshape->success) {
-    output.failure = "the target was not built: " + output.result.reshape->reason;
-  } else if (output.result.failure) {
-    output.failure = output.result.failure;
-  }
-  return output;
 }
 
 }  // namespace datomsim::app

@@ -79,7 +79,8 @@ target::Target boxTarget(const GenerateArguments& args) {
   return unwrap(target::Target::grid(cells));
 }
 
-void writeGenerated(world::World world, const std::string& name, const GenerateArguments& args) {
+void writeGenerated(world::World world, const std::string& name, const GenerateArguments& args,
+                    const Reporter& reporter) {
   std::vector<NamedPath> inputs;
   for (const std::string& file : args.targetFiles) inputs.push_back({"--target", file});
   refuseClashes(inputs, {{"--out", args.out}});
@@ -93,21 +94,22 @@ void writeGenerated(world::World world, const std::string& name, const GenerateA
     for (target::Target& target : source.targets) scene.targets.push_back(std::move(target));
   }
   if (!args.targetBox.empty()) scene.targets.push_back(boxTarget(args));
-  declareGridForVisibleSim(scene, args.out);
+  declareGridForVisibleSim(scene, args.out, reporter);
   check(io::writeScene(scene, args.out));
-  reportWritten(args.out, fmt::format("{} modules{}", scene.world.size(),
-                                      scene.targets.empty()
-                                          ? ""
-                                          : fmt::format(", {} target{}", scene.targets.size(),
-                                                        scene.targets.size() == 1 ? "" : "s")));
+  reporter.reportWritten(
+      args.out,
+      fmt::format("{} modules{}", scene.world.size(),
+                  scene.targets.empty() ? ""
+                                        : fmt::format(", {} target{}", scene.targets.size(),
+                                                      scene.targets.size() == 1 ? "" : "s")));
 }
 
-void addGenerate(CLI::App& app) {
+void addGenerate(CLI::App& app, const Reporter& reporter) {
   CLI::App* generate =
       app.add_subcommand("generate", "Make a scene: box, arch, random, or a reshape case");
   generate->require_subcommand(1);
   addExample(*generate, "generate box --size 6,5,2 -o box.json");
-  addReshapeGenerator(*generate);
+  addReshapeGenerator(*generate, reporter);
 
   struct BoxArguments {
     std::string size, origin = "0,0,0", grid;
@@ -124,7 +126,7 @@ void addGenerate(CLI::App& app) {
                        "layer's x and y less floor(z/2) (docs/coordinates.md); fills a grid of "
                        "its own size");
   addExample(*boxCommand, "generate box --size 10,10,4 --upright -o tall.json");
-  boxCommand->callback([box] {
+  boxCommand->callback([box, &reporter] {
     scene::BoxOptions options;
     options.upright = box->upright;
     options.origin = parseCell("--origin", box->origin);
@@ -142,7 +144,7 @@ void addGenerate(CLI::App& app) {
           "add --upright for one that stands straight, or give --grid {}",
           world.error(), size.z, geometry::toString(needed)));
     }
-    writeGenerated(unwrap(std::move(world)), "box " + box->size, box->generate);
+    writeGenerated(unwrap(std::move(world)), "box " + box->size, box->generate, reporter);
   });
 
   struct ArchArguments {
@@ -157,9 +159,9 @@ void addGenerate(CLI::App& app) {
       ->check(CLI::IsMember({1, 2}))
       ->capture_default_str();
   addExample(*archCommand, "generate arch --hole 1 -o arch1.json");
-  archCommand->callback([arch] {
+  archCommand->callback([arch, &reporter] {
     writeGenerated(unwrap(scene::paperArch(arch->hole)),
-                   fmt::format("paper arch, hole {} high", arch->hole), arch->generate);
+                   fmt::format("paper arch, hole {} high", arch->hole), arch->generate, reporter);
   });
 
   struct RandomArguments {
@@ -185,7 +187,7 @@ void addGenerate(CLI::App& app) {
   randomCommand->add_flag("--random-orientations", random->orientations,
                           "Draw each module's orientation");
   addExample(*randomCommand, "generate random --count 100 --seed 7 --grid 12,12,6 -o random.json");
-  randomCommand->callback([random] {
+  randomCommand->callback([random, &reporter] {
     scene::RandomOptions options;
     if (!random->grid.empty()) options.gridSize = parseCell("--grid", random->grid);
     options.maxHeight = random->height;
@@ -198,11 +200,12 @@ void addGenerate(CLI::App& app) {
       const auto [low, high] = gridExtent(world);
       world = rebuilt(world, world.bounds(), {-low.x, -low.y, 0});
     }
-    writeGenerated(std::move(world), fmt::format("random, seed {}", seed), random->generate);
+    writeGenerated(std::move(world), fmt::format("random, seed {}", seed), random->generate,
+                   reporter);
   });
 }
 
-void addConvert(CLI::App& app) {
+void addConvert(CLI::App& app, const Reporter& reporter) {
   struct Arguments {
     std::string in, out, module;
   };
@@ -216,13 +219,13 @@ void addConvert(CLI::App& app) {
                    "Make the modules datom or catom3d (default: what the file says)")
       ->check(CLI::IsMember({"datom", "catom3d"}));
   addExample(*command, "convert scenes/paper-arch-hole1.json -o arch1.xml");
-  command->callback([args] {
+  command->callback([args, &reporter] {
     refuseClashes({{"scene", args->in}}, {{"--out", args->out}});
     io::Scene scene = unwrap(io::readScene(args->in));
     if (!args->module.empty()) scene.moduleKind = *world::moduleKindNamed(args->module);
-    declareGridForVisibleSim(scene, args->out);
+    declareGridForVisibleSim(scene, args->out, reporter);
     check(io::writeScene(scene, args->out));
-    reportWritten(
+    reporter.reportWritten(
         args->out,
         fmt::format("{} modules{}", scene.world.size(),
                     scene.moduleKind == world::ModuleKind::kCatom3D ? " (3D Catoms)" : ""));
@@ -343,84 +346,10 @@ void addInfo(CLI::App& app) {
 
 }  // namespace
 
-void addSceneCommands(CLI::App& app) {
-  addGenerate(app);
-  addConvert(app);
+void addSceneCommands(CLI::App& app, const Reporter& reporter) {
+  addGenerate(app, reporter);
+  addConvert(app, reporter);
   addInfo(app);
-}
-
-// The same modules (ids, orientations, colours, order) moved by `offset` into a world of `bounds`,
-// all neighbours latched.
-world::World rebuilt(const world::World& from, const world::Bounds& bounds,
-                     const geometry::Cell& offset) {
-  world::World world(bounds);
-  world.reserve(from.size());
-  for (world::Module module : from.modules()) {
-    module.cell = module.cell + offset;
-    check(world.add(module));
-  }
-  world.latchAllNeighbours();
-  return world;
-}
-
-// The smallest and largest grid coordinates (x + floor(z/2), y + floor(z/2), z) of the modules.
-std::pair<geometry::Cell, geometry::Cell> gridExtent(const world::World& world) {
-  geometry::Cell low{INT32_MAX, INT32_MAX, INT32_MAX}, high{INT32_MIN, INT32_MIN, INT32_MIN};
-  for (const world::Module& module : world.modules()) {
-    const int32_t shift = geometry::floorHalf(module.cell.z);
-    const geometry::Cell grid{module.cell.x + shift, module.cell.y + shift, module.cell.z};
-    low = {std::min(low.x, grid.x), std::min(low.y, grid.y), std::min(low.z, grid.z)};
-    high = {std::max(high.x, grid.x), std::max(high.y, grid.y), std::max(high.z, grid.z)};
-  }
-  return {low, high};
-}
-
-namespace {
-
-// The largest grid coordinates of the cells a scene's grid targets list, or `high` if larger: a
-// grid target's cells must fit the grid too (a CSG target's cells follow from the grid).
-geometry::Cell withGridTargets(const io::Scene& scene, geometry::Cell high) {
-  for (const target::Target& target : scene.targets) {
-    if (target.format() != target::Format::kGrid) continue;
-    for (const geometry::Cell& cell : unwrap(target.cells())) {
-      const int32_t shift = geometry::floorHalf(cell.z);
-      high = {std::max(high.x, cell.x + shift), std::max(high.y, cell.y + shift),
-              std::max(high.z, cell.z)};
-    }
-  }
-  return high;
-}
-
-}  // namespace
-
-// VisibleSim opens only a file that declares its grid, which starts at 0,0,0. A scene written as
-// XML without one gets the smallest grid that holds its modules with room to move: two free cells
-// beyond them on the far sides and two free layers above. Cells below the grid's origin cannot be
-// written so; the refusal names one.
-void declareGridForVisibleSim(io::Scene& scene, const std::string& out) {
-  const auto format = io::sceneFormatOf(out);
-  if (scene.world.bounds().gridSize || scene.world.size() == 0 || !format.ok() ||
-      *format != io::SceneFormat::kVisibleSimXml) {
-    return;
-  }
-  const auto [low, high] = gridExtent(scene.world);
-  if (low.x < 0 || low.y < 0) {
-    for (const world::Module& module : scene.world.modules()) {
-      const int32_t shift = geometry::floorHalf(module.cell.z);
-      if (module.cell.x + shift < 0 || module.cell.y + shift < 0) {
-        throw UsageError(fmt::format(
-            "{}: VisibleSim's grid starts at 0,0,0, and module {} at {} lies before it (x + "
-            "floor(z/2) and y + floor(z/2) must not be negative; docs/coordinates.md); write JSON, "
-            "or move the scene",
-            out, module.id.value, geometry::toString(module.cell)));
-      }
-    }
-  }
-  constexpr int32_t kRoom = 2;
-  const geometry::Cell far = withGridTargets(scene, high);
-  const geometry::Cell grid{far.x + 1 + kRoom, far.y + 1 + kRoom, far.z + 1 + kRoom};
-  scene.world = rebuilt(scene.world, world::Bounds{grid}, {0, 0, 0});
-  note(fmt::format("declared grid {} in {}: VisibleSim needs one", geometry::toString(grid), out));
 }
 
 }  // namespace datomsim::app

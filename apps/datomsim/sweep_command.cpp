@@ -39,7 +39,7 @@ std::filesystem::path packageFolder() {
 
 }  // namespace
 
-void addSweepCommand(CLI::App& app) {
+void addSweepCommand(CLI::App& app, const Reporter& reporter) {
   struct Arguments {
     std::string spec, out, scheduler;
     int workers = 0;
@@ -57,7 +57,7 @@ void addSweepCommand(CLI::App& app) {
   command->add_option("--scheduler", args->scheduler,
                       "A Dask scheduler's address (tcp://host:8786) to run the cases on");
   addExample(*command, "sweep scenes/sweep-reshape.json -o sweep.csv --workers 2");
-  command->callback([args] {
+  command->callback([args, &reporter] {
     const std::filesystem::path package = packageFolder();
     const char* before = std::getenv("PYTHONPATH");
     const std::string path =
@@ -67,7 +67,7 @@ void addSweepCommand(CLI::App& app) {
         DATOMSIM_PYTHON_EXECUTABLE, "-m", "datomsim.sweeps", args->spec, "-o", args->out};
     if (args->workers > 0) argv.insert(argv.end(), {"--workers", std::to_string(args->workers)});
     if (!args->scheduler.empty()) argv.insert(argv.end(), {"--scheduler", args->scheduler});
-    if (quiet()) argv.push_back("--quiet");
+    if (reporter.quiet()) argv.push_back("--quiet");
     std::vector<char*> pointers;
     for (std::string& argument : argv) pointers.push_back(argument.data());
     pointers.push_back(nullptr);

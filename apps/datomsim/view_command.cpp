@@ -71,9 +71,9 @@ std::pair<int, int> parseSize(const std::string& text) {
 
 }  // namespace
 
-std::function<void(int, int)> videoProgress(const std::string& name) {
+std::function<void(int, int)> videoProgress(const std::string& name, const Reporter& reporter) {
   // A count of frames on a terminal; nothing in a log.
-  if (quiet() || !::isatty(STDERR_FILENO)) return {};
+  if (reporter.quiet() || !::isatty(STDERR_FILENO)) return {};
   return [name](int done, int total) {
     fmt::print(stderr, "\r{}: frame {}/{}", name, done, total);
     if (done == total) fmt::print(stderr, "\r\033[K");
@@ -89,7 +89,7 @@ std::string describeVideo(const video::VideoSummary& made, const video::VideoReq
                      made.drawn);
 }
 
-void addViewCommand(CLI::App& app) {
+void addViewCommand(CLI::App& app, const Reporter& reporter) {
   struct Arguments {
     PageArguments page;
     std::string out;
@@ -104,15 +104,15 @@ void addViewCommand(CLI::App& app) {
                       "HTML file to write (default: the input's name with .html added, so that a "
                       "scene and its trace, x.json and x.jsonl, give two pages)");
   addExample(*command, "view scenes/walkers.json -o walkers.html");
-  command->callback([args] {
+  command->callback([args, &reporter] {
     const exporting::ViewerPage page = pageOf(args->page);
     const std::filesystem::path out = outputFor(args->out, args->page.input, ".html");
     check(exporting::writeViewerPage(out, bundleFor(args->page), page));
-    reportWritten(out.string());
+    reporter.reportWritten(out.string());
   });
 }
 
-void addVideoCommand(CLI::App& app) {
+void addVideoCommand(CLI::App& app, const Reporter& reporter) {
   struct Arguments {
     PageArguments page;
     std::string out, size = "960x540", view = "3d", chromium;
@@ -145,7 +145,7 @@ void addVideoCommand(CLI::App& app) {
   command->add_option("--chromium", args->chromium,
                       "The browser that draws the frames (default: $CHROMIUM, else chromium)");
   addExample(*command, "video scenes/paper-arch-hole1.json --size 320x180 --fps 8 -o arch1.gif");
-  command->callback([args] {
+  command->callback([args, &reporter] {
     video::VideoRequest request;
     request.out = outputFor(args->out, args->page.input, ".mp4");
     unwrap(video::containerOf(request.out));  // before the page is made
@@ -158,9 +158,9 @@ void addVideoCommand(CLI::App& app) {
     request.shadows = args->shadows;
     request.chromium = args->chromium;
     request.pageHtml = unwrap(exporting::viewerHtml(bundleFor(args->page), pageOf(args->page)));
-    request.progress = videoProgress(request.out.filename().string());
+    request.progress = videoProgress(request.out.filename().string(), reporter);
     const video::VideoSummary made = unwrap(video::recordVideo(request));
-    reportWritten(request.out.string(), describeVideo(made, request));
+    reporter.reportWritten(request.out.string(), describeVideo(made, request));
   });
 }
 

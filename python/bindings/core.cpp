@@ -1,6 +1,6 @@
-// datomsim._core: the Python package's C++ half (docs/python.md). It drives the same functions as
-// the command line (apps/datomsim: runOnScene, reachOnScene, movesJson), so that a run from
-// Python gives the JSON `run --out` gives, and a refusal the same message, raised as
+// datomsim._core: the Python package's C++ half (docs/python.md). It drives the services the
+// command line's subcommands drive (src/frontend: runOnScene, reachOnScene, movesJson), so that a
+// run from Python gives the JSON `run --out` gives, and a refusal the same message, raised as
 // datomsim.Error. Arrays (cells, distances, colours) are numpy arrays; the rest is what
 // datomsim/__init__.py shapes into Python values.
 #include <pybind11/numpy.h>
@@ -14,12 +14,18 @@
 #include <string>
 #include <vector>
 
-#include "../../apps/datomsim/commands.h"
-#include "../../apps/datomsim/motion_json.h"
+#include "frontend/arguments.h"
+#include "frontend/geometry_json.h"
+#include "frontend/motion_json.h"
+#include "frontend/reach_on_scene.h"
+#include "frontend/reshape_case.h"
+#include "frontend/run_json.h"
+#include "frontend/run_on_scene.h"
+#include "frontend/usage_error.h"
 #include "geometry/cell_text.h"
-#include "geometry/lattice.h"
 #include "io/scene_file.h"
 #include "motion/motion.h"
+#include "scene.h"
 #include "scene/box.h"
 #include "scene/paper_arch.h"
 #include "scene/random_scene.h"
@@ -29,204 +35,25 @@ namespace py = pybind11;
 namespace datomsim::python {
 namespace {
 
-using app::UsageError;
+using frontend::UsageError;
 using geometry::Cell;
-
-// A cell given as (x, y, z) or as the command line's text ("6,5,2", "(6,5,2)"); errors name
-// `option` as the command line would.
-Cell cellArgument(const py::handle& value, const std::string& option) {
-  if (py::isinstance<py::str>(value)) return app::parseCell(option, value.cast<std::string>());
-  if (py::isinstance<py::sequence>(value) && py::len(value) == 3) {
-    const py::sequence items = value.cast<py::sequence>();
-    std::string text;
-    for (size_t k = 0; k < 3; ++k) {
-      const py::handle item = items[k];
-      if (!py::isinstance<py::int_>(item) && !(py::hasattr(item, "__index__"))) {
-        throw UsageError(fmt::format("{} {}: expected three integers x,y,z", option,
-                                     py::repr(value).cast<std::string>()));
-      }
-      text += (k ? "," : "") +
-              py::str(py::int_(py::reinterpret_borrow<py::object>(item))).cast<std::string>();
-    }
-    return app::parseCell(option, text);
-  }
-  throw UsageError(fmt::format("{} {}: expected three integers x,y,z", option,
-                               py::repr(value).cast<std::string>()));
-}
-
-std::optional<Cell> optionalCell(const py::object& value, const std::string& option) {
-  if (value.is_none()) return std::nullopt;
-  return cellArgument(value, option);
-}
-
-// An (n, 3) int32 array of cells.
-py::array_t<int32_t> cellArray(const std::vector<Cell>& cells) {
-  py::array_t<int32_t> out({py::ssize_t(cells.size()), py::ssize_t(3)});
-  auto view = out.mutable_unchecked<2>();
-  for (size_t k = 0; k < cells.size(); ++k) {
-    view(py::ssize_t(k), 0) = cells[k].x;
-    view(py::ssize_t(k), 1) = cells[k].y;
-    view(py::ssize_t(k), 2) = cells[k].z;
-  }
-  return out;
-}
 
 std::string onOff(bool on) {
   return on ? "on" : "off";
 }
 
-app::RuleArguments ruleArguments(const std::string& rules, bool attachment, bool connectivity) {
-  app::RuleArguments arguments;
+frontend::RuleArguments ruleArguments(const std::string& rules, bool attachment,
+                                      bool connectivity) {
+  frontend::RuleArguments arguments;
   arguments.rules = rules;
   arguments.attachment = onOff(attachment);
   arguments.connectivity = onOff(connectivity);
   return arguments;
 }
 
-// The module kind named, or the scene's; refused as the command line refuses it.
-world::ModuleKind kindOf(const std::optional<std::string>& module, world::ModuleKind scene) {
-  if (!module) return scene;
-  if (const auto kind = world::moduleKindNamed(*module)) return *kind;
-  throw app::UsageError("--module: " + *module + " not in {datom,catom3d}");
-}
-
 catom3d::RollRules rollingOf(const std::string& rolling) {
   if (const auto rules = catom3d::rollRulesNamed(rolling)) return *rules;
-  throw app::UsageError("--rolling: " + rolling + " not in {symmetric,visiblesim}");
-}
-
-// A scene in memory: the modules and what the file formats carry besides them.
-class Scene {
- public:
-  explicit Scene(io::Scene scene) : scene_(std::move(scene)) {}
-
-  const io::Scene& scene() const { return scene_; }
-  std::string module() const { return std::string(world::toString(scene_.moduleKind)); }
-  void setModule(const std::string& module) {
-    scene_.moduleKind = kindOf(module, scene_.moduleKind);
-  }
-
-  size_t size() const { return scene_.world.size(); }
-
-  py::array_t<int32_t> cells() const {
-    std::vector<Cell> cells;
-    cells.reserve(size());
-    for (const world::Module& m : scene_.world.modules()) cells.push_back(m.cell);
-    return cellArray(cells);
-  }
-  py::array_t<uint32_t> ids() const {
-    py::array_t<uint32_t> out{py::ssize_t(size())};
-    auto view = out.mutable_unchecked<1>();
-    py::ssize_t k = 0;
-    for (const world::Module& m : scene_.world.modules()) view(k++) = m.id.value;
-    return out;
-  }
-  py::array_t<uint8_t> colors() const {
-    py::array_t<uint8_t> out({py::ssize_t(size()), py::ssize_t(3)});
-    auto view = out.mutable_unchecked<2>();
-    py::ssize_t k = 0;
-    for (const world::Module& m : scene_.world.modules()) {
-      view(k, 0) = m.color.r;
-      view(k, 1) = m.color.g;
-      view(k, 2) = m.color.b;
-      ++k;
-    }
-    return out;
-  }
-  py::array_t<uint8_t> orientations() const {
-    py::array_t<uint8_t> out{py::ssize_t(size())};
-    auto view = out.mutable_unchecked<1>();
-    py::ssize_t k = 0;
-    for (const world::Module& m : scene_.world.modules()) {
-      view(k++) = uint8_t(m.orientation.code());
-    }
-    return out;
-  }
-  std::optional<std::tuple<int, int, int>> grid() const {
-    const auto& size = scene_.world.bounds().gridSize;
-    if (!size) return std::nullopt;
-    return std::tuple{size->x, size->y, size->z};
-  }
-  std::optional<std::string> name() const { return scene_.name; }
-
-  // Adds a module (the next free id) and latches it to its neighbours; returns its id.
-  uint32_t add(const py::object& cell, int orientation, const std::tuple<int, int, int>& color) {
-    const Cell at = cellArgument(cell, "cell");
-    const auto code = geometry::Orientation::fromCode(orientation);
-    if (!code) throw UsageError(fmt::format("orientation {}: a code in 0..23", orientation));
-    const auto [r, g, b] = color;
-    for (const int channel : {r, g, b}) {
-      if (channel < 0 || channel > 255) {
-        throw UsageError(fmt::format("color ({},{},{}): channels in 0..255", r, g, b));
-      }
-    }
-    const ModuleId id = scene_.world.nextFreeId();
-    app::check(scene_.world.add({id, at, *code, Color{uint8_t(r), uint8_t(g), uint8_t(b)}}));
-    scene_.world.latchAllNeighbours();
-    return id.value;
-  }
-  void remove(uint32_t id) { app::check(scene_.world.remove(ModuleId{id})); }
-  void move(uint32_t id, const py::object& cell) {
-    app::check(scene_.world.move(ModuleId{id}, cellArgument(cell, "cell")));
-    scene_.world.latchAllNeighbours();
-  }
-  std::optional<uint32_t> moduleAt(const py::object& cell) const {
-    const world::Module* m = scene_.world.moduleAt(cellArgument(cell, "cell"));
-    if (m == nullptr) return std::nullopt;
-    return m->id.value;
-  }
-
-  // Every empty cell inside the world next to a module, sorted by x, then y, then z: where a
-  // module could be added or a mobile could stand.
-  py::array_t<int32_t> freeSurfaceCells() const {
-    std::set<std::tuple<int32_t, int32_t, int32_t>> found;
-    for (const world::Module& m : scene_.world.modules()) {
-      for (int d = 0; d < geometry::kDirectionCount; ++d) {
-        const Cell next = m.cell + geometry::neighbourOffset(d);
-        if (scene_.world.isInside(next) && scene_.world.moduleAt(next) == nullptr) {
-          found.insert({next.x, next.y, next.z});
-        }
-      }
-    }
-    std::vector<Cell> cells;
-    cells.reserve(found.size());
-    for (const auto& [x, y, z] : found) cells.push_back({x, y, z});
-    return cellArray(cells);
-  }
-
-  // The cells of each target shape, in the scene's order.
-  std::vector<py::array_t<int32_t>> targets() const {
-    std::vector<py::array_t<int32_t>> out;
-    for (const target::Target& shape : scene_.targets) {
-      out.push_back(cellArray(app::unwrap(shape.cells())));
-    }
-    return out;
-  }
-
-  void save(const std::filesystem::path& path) const {
-    io::Scene written = scene_;
-    app::declareGridForVisibleSim(written, path.string());
-    app::check(io::writeScene(written, path));
-  }
-
-  Scene copy() const { return *this; }
-
-  std::string repr() const {
-    return fmt::format(
-        "<datomsim.Scene {}{} modules{}>", scene_.name ? *scene_.name + ": " : "", size(),
-        scene_.targets.empty() ? "" : fmt::format(", {} target(s)", scene_.targets.size()));
-  }
-
- private:
-  io::Scene scene_;
-};
-
-Scene sceneOf(world::World world, std::string name) {
-  world.latchAllNeighbours();
-  io::Scene scene;
-  scene.world = std::move(world);
-  scene.name = std::move(name);
-  return Scene(std::move(scene));
+  throw frontend::UsageError("--rolling: " + rolling + " not in {symmetric,visiblesim}");
 }
 
 // {"cells": (n, 3), "distances": (n,), "path": (p, 3), "goal": (3,)}: `reach --out` as arrays.
@@ -234,11 +61,11 @@ py::dict reach(const Scene& scene, const py::object& goal, const py::object& sta
                const std::string& rules, bool attachment, bool connectivity,
                const std::optional<std::string>& module, const std::string& rolling) {
   const Cell at = cellArgument(goal, "--goal");
-  const app::MotionModel model{kindOf(module, scene.scene().moduleKind),
-                               ruleArguments(rules, attachment, connectivity).options(),
-                               rollingOf(rolling)};
-  const app::ReachOutput reached =
-      app::reachOnScene(scene.scene(), at, optionalCell(start, "--start"), model);
+  const frontend::MotionModel model{kindOf(module, scene.scene().moduleKind),
+                                    ruleArguments(rules, attachment, connectivity).options(),
+                                    rollingOf(rolling)};
+  const frontend::ReachOutput reached =
+      frontend::reachOnScene(scene.scene(), at, optionalCell(start, "--start"), model);
   const auto sorted = reached.map.sorted();
   std::vector<Cell> cells;
   py::array_t<int32_t> distances{py::ssize_t(sorted.size())};
@@ -267,21 +94,22 @@ std::string moves(const Scene& scene, const py::object& at, const std::string& r
   }
   const world::Module* mobile = world.moduleAt(cell);
   const motion::Mobile where{cell, mobile ? std::optional(mobile->id) : std::nullopt};
-  const app::MotionModel model{kindOf(module, scene.scene().moduleKind),
-                               ruleArguments(rules, attachment, false).options(),
-                               rollingOf(rolling)};
+  const frontend::MotionModel model{kindOf(module, scene.scene().moduleKind),
+                                    ruleArguments(rules, attachment, false).options(),
+                                    rollingOf(rolling)};
   if (model.kind == world::ModuleKind::kCatom3D) {
     const catom3d::RollTable rolls;
-    return app::rollsJson(cell, catom3d::evaluateAll(world, rolls, where, model.rolling), model);
+    return frontend::rollsJson(cell, catom3d::evaluateAll(world, rolls, where, model.rolling),
+                               model);
   }
   const motion::RuleTable table;
-  return app::movesJson(cell, motion::evaluateAll(world, table, where, model.datom));
+  return frontend::movesJson(cell, motion::evaluateAll(world, table, where, model.datom));
 }
 
 // (the JSON text of `run --out`, the trace or None, the failure or None).
 std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> run(
     const Scene& scene, const std::string& program, const py::dict& options) {
-  app::RunArguments args;
+  frontend::RunArguments args;
   args.program = program;
   const std::set<std::string> known = {
       "goal",     "start",     "rules",       "attachment", "connectivity", "seed",
@@ -331,10 +159,10 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
   const std::string sceneName = options.contains("scene_name")
                                     ? options["scene_name"].cast<std::string>()
                                     : scene.scene().name.value_or("a scene from Python");
-  app::RunOutput output = app::runOnScene(scene.scene(), sceneName, args);
+  frontend::RunOutput output = frontend::runOnScene(scene.scene(), sceneName, args);
   std::optional<std::string> trace;
   if (args.wantTrace) trace = std::move(output.result.trace);
-  return {app::runJson(output.info, output.result, output.parameters), std::move(trace),
+  return {frontend::runJson(output.info, output.result, output.parameters), std::move(trace),
           output.failure};
 }
 
@@ -343,7 +171,7 @@ std::string geometryOf(double radius, double thickness, const std::optional<doub
   if (fraction && !(*fraction >= 0 && *fraction <= 1)) {
     throw UsageError(fmt::format("--fraction: Value {} not in range [0 - 1]", *fraction));
   }
-  return app::geometryJson(radius, thickness, fraction).dump();
+  return frontend::geometryJson(radius, thickness, fraction).dump();
 }
 
 }  // namespace
@@ -353,9 +181,8 @@ PYBIND11_MODULE(_core, module) {
   using namespace datomsim;
   using namespace datomsim::python;
   module.doc() = "datomsim's C++ core: scenes, reach, moves, runs (see the package datomsim)";
-  app::setQuiet(true);  // Python says nothing on standard error; the values say it all
-  py::register_exception<app::UsageError>(module, "Error", PyExc_ValueError);
-  py::register_exception<app::CheckFailed>(module, "CheckFailed", PyExc_RuntimeError);
+  py::register_exception<frontend::UsageError>(module, "Error", PyExc_ValueError);
+  py::register_exception<frontend::CheckFailed>(module, "CheckFailed", PyExc_RuntimeError);
 
   py::class_<Scene>(module, "Scene", "A scene: modules in an FCC lattice, and target shapes")
       .def("__len__", &Scene::size)
@@ -386,7 +213,9 @@ PYBIND11_MODULE(_core, module) {
 
   module.def(
       "load_scene",
-      [](const std::filesystem::path& path) { return Scene(app::unwrap(io::readScene(path))); },
+      [](const std::filesystem::path& path) {
+        return Scene(frontend::unwrap(io::readScene(path)));
+      },
       py::arg("path"), "Read a .json or VisibleSim .xml scene file");
   module.def(
       "box",
@@ -395,7 +224,7 @@ PYBIND11_MODULE(_core, module) {
         options.origin = cellArgument(origin, "--origin");
         options.upright = upright;
         const geometry::Cell cells = cellArgument(size, "--size");
-        return sceneOf(app::unwrap(scene::box(cells, options)),
+        return sceneOf(frontend::unwrap(scene::box(cells, options)),
                        fmt::format("box {}x{}x{}", cells.x, cells.y, cells.z));
       },
       py::arg("size"), py::arg("origin") = py::make_tuple(0, 0, 0), py::arg("upright") = false,
@@ -403,7 +232,7 @@ PYBIND11_MODULE(_core, module) {
   module.def(
       "arch",
       [](int hole) {
-        return sceneOf(app::unwrap(scene::paperArch(hole)),
+        return sceneOf(frontend::unwrap(scene::paperArch(hole)),
                        fmt::format("paper arch, hole {} high", hole));
       },
       py::arg("hole") = 2, "The paper's scene with an arch whose hole is 2 or 1 high");
@@ -412,7 +241,7 @@ PYBIND11_MODULE(_core, module) {
       [](size_t count, uint64_t seed, const py::object& grid) {
         scene::RandomOptions options;
         options.gridSize = optionalCell(grid, "--grid");
-        return sceneOf(app::unwrap(scene::random(seed, count, options)),
+        return sceneOf(frontend::unwrap(scene::random(seed, count, options)),
                        fmt::format("random, {} modules, seed {}", count, seed));
       },
       py::arg("count"), py::arg("seed") = 1, py::arg("grid") = py::none(),
@@ -421,7 +250,7 @@ PYBIND11_MODULE(_core, module) {
       "reshape",
       [](const std::string& kase, int length, const py::object& floor, int modules, uint64_t seed,
          int side, int base) {
-        app::ReshapeArguments args;
+        frontend::ReshapeArguments args;
         args.kase = kase;
         args.length = length;
         const geometry::Cell size = cellArgument(
@@ -434,7 +263,7 @@ PYBIND11_MODULE(_core, module) {
         args.seed = std::to_string(seed);
         args.side = side;
         args.base = base;
-        return Scene(app::reshapeCase(args));
+        return Scene(frontend::reshapeCase(args));
       },
       py::arg("case"), py::arg("length") = 8, py::arg("floor") = py::make_tuple(12, 12),
       py::arg("modules") = 20, py::arg("seed") = 1, py::arg("side") = 96, py::arg("base") = 0,

@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "arguments.h"
 #include "catom3d/rolling.h"
+#include "frontend/arguments.h"
 #include "geometry/cell.h"
 #include "motion/motion.h"
 #include "motion/reach.h"
 
-namespace datomsim::app {
+namespace datomsim::frontend {
 
 // Streams the reach document to an open file; the error says what could not be written.
 Status writeReachJson(const motion::DistanceMap& map, const std::vector<geometry::Cell>& path,
@@ -36,4 +36,4 @@ std::string rollsJson(const geometry::Cell& at, const std::vector<catom3d::RollE
 std::string rollsTable(const geometry::Cell& at, const std::vector<catom3d::RollEvaluation>& rolls,
                        const MotionModel& model);
 
-}  // namespace datomsim::app
+}  // namespace datomsim::frontend

@@ -1,10 +1,10 @@
-#include "json_stream.h"
+#include "frontend/json_stream.h"
 
 #include <array>
 #include <charconv>
 #include <cmath>
 
-namespace datomsim::app {
+namespace datomsim::frontend {
 
 void JsonObjectStream::field(std::string_view key, const nlohmann::ordered_json& value) {
   open(key);
@@ -120,4 +120,4 @@ void JsonObjectStream::flush() {
   buffer_.clear();
 }
 
-}  // namespace datomsim::app
+}  // namespace datomsim::frontend

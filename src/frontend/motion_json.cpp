@@ -1,6 +1,6 @@
-#include "motion_json.h"
+#include "frontend/motion_json.h"
 
-#include "json_stream.h"
+#include "frontend/json_stream.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
-namespace datomsim::app {
+namespace datomsim::frontend {
 
 using geometry::Cell;
 
@@ -187,4 +187,4 @@ std::string rollsTable(const Cell& at, const std::vector<catom3d::RollEvaluation
   return out;
 }
 
-}  // namespace datomsim::app
+}  // namespace datomsim::frontend

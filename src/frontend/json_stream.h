@@ -16,7 +16,7 @@
 #include "datomsim/result.h"
 #include "geometry/cell.h"
 
-namespace datomsim::app {
+namespace datomsim::frontend {
 
 class JsonObjectStream {
  public:
@@ -65,4 +65,4 @@ struct FileEmitter {
   }
 };
 
-}  // namespace datomsim::app
+}  // namespace datomsim::frontend

@@ -1,0 +1,175 @@
+// The scene Python holds (datomsim.Scene) and the conversions between Python values and the
+// command line's: cells given as tuples or text, arrays of cells, module kinds by name.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <fmt/format.h>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "frontend/usage_error.h"
+#include "frontend/visiblesim_grid.h"
+#include "geometry/cell.h"
+#include "geometry/lattice.h"
+#include "io/scene.h"
+#include "io/scene_file.h"
+#include "world/module_kind.h"
+#include "world/world.h"
+
+namespace datomsim::python {
+
+namespace py = pybind11;
+using geometry::Cell;
+
+// A cell given as (x, y, z) or as the command line's text ("6,5,2", "(6,5,2)"); errors name
+// `option` as the command line would.
+Cell cellArgument(const py::handle& value, const std::string& option);
+
+std::optional<Cell> optionalCell(const py::object& value, const std::string& option);
+
+// An (n, 3) int32 array of cells.
+py::array_t<int32_t> cellArray(const std::vector<Cell>& cells);
+
+// The module kind named, or the scene's; refused as the command line refuses it.
+world::ModuleKind kindOf(const std::optional<std::string>& module, world::ModuleKind scene);
+
+// A scene in memory: the modules and what the file formats carry besides them.
+class Scene {
+ public:
+  explicit Scene(io::Scene scene) : scene_(std::move(scene)) {}
+
+  const io::Scene& scene() const { return scene_; }
+  std::string module() const { return std::string(world::toString(scene_.moduleKind)); }
+  void setModule(const std::string& module) {
+    scene_.moduleKind = kindOf(module, scene_.moduleKind);
+  }
+
+  size_t size() const { return scene_.world.size(); }
+
+  py::array_t<int32_t> cells() const {
+    std::vector<Cell> cells;
+    cells.reserve(size());
+    for (const world::Module& m : scene_.world.modules()) cells.push_back(m.cell);
+    return cellArray(cells);
+  }
+  py::array_t<uint32_t> ids() const {
+    py::array_t<uint32_t> out{py::ssize_t(size())};
+    auto view = out.mutable_unchecked<1>();
+    py::ssize_t k = 0;
+    for (const world::Module& m : scene_.world.modules()) view(k++) = m.id.value;
+    return out;
+  }
+  py::array_t<uint8_t> colors() const {
+    py::array_t<uint8_t> out({py::ssize_t(size()), py::ssize_t(3)});
+    auto view = out.mutable_unchecked<2>();
+    py::ssize_t k = 0;
+    for (const world::Module& m : scene_.world.modules()) {
+      view(k, 0) = m.color.r;
+      view(k, 1) = m.color.g;
+      view(k, 2) = m.color.b;
+      ++k;
+    }
+    return out;
+  }
+  py::array_t<uint8_t> orientations() const {
+    py::array_t<uint8_t> out{py::ssize_t(size())};
+    auto view = out.mutable_unchecked<1>();
+    py::ssize_t k = 0;
+    for (const world::Module& m : scene_.world.modules()) {
+      view(k++) = uint8_t(m.orientation.code());
+    }
+    return out;
+  }
+  std::optional<std::tuple<int, int, int>> grid() const {
+    const auto& size = scene_.world.bounds().gridSize;
+    if (!size) return std::nullopt;
+    return std::tuple{size->x, size->y, size->z};
+  }
+  std::optional<std::string> name() const { return scene_.name; }
+
+  // Adds a module (the next free id) and latches it to its neighbours; returns its id.
+  uint32_t add(const py::object& cell, int orientation, const std::tuple<int, int, int>& color) {
+    const Cell at = cellArgument(cell, "cell");
+    const auto code = geometry::Orientation::fromCode(orientation);
+    if (!code)
+      throw frontend::UsageError(fmt::format("orientation {}: a code in 0..23", orientation));
+    const auto [r, g, b] = color;
+    for (const int channel : {r, g, b}) {
+      if (channel < 0 || channel > 255) {
+        throw frontend::UsageError(fmt::format("color ({},{},{}): channels in 0..255", r, g, b));
+      }
+    }
+    const ModuleId id = scene_.world.nextFreeId();
+    frontend::check(scene_.world.add({id, at, *code, Color{uint8_t(r), uint8_t(g), uint8_t(b)}}));
+    scene_.world.latchAllNeighbours();
+    return id.value;
+  }
+  void remove(uint32_t id) { frontend::check(scene_.world.remove(ModuleId{id})); }
+  void move(uint32_t id, const py::object& cell) {
+    frontend::check(scene_.world.move(ModuleId{id}, cellArgument(cell, "cell")));
+    scene_.world.latchAllNeighbours();
+  }
+  std::optional<uint32_t> moduleAt(const py::object& cell) const {
+    const world::Module* m = scene_.world.moduleAt(cellArgument(cell, "cell"));
+    if (m == nullptr) return std::nullopt;
+    return m->id.value;
+  }
+
+  // Every empty cell inside the world next to a module, sorted by x, then y, then z: where a
+  // module could be added or a mobile could stand.
+  py::array_t<int32_t> freeSurfaceCells() const {
+    std::set<std::tuple<int32_t, int32_t, int32_t>> found;
+    for (const world::Module& m : scene_.world.modules()) {
+      for (int d = 0; d < geometry::kDirectionCount; ++d) {
+        const Cell next = m.cell + geometry::neighbourOffset(d);
+        if (scene_.world.isInside(next) && scene_.world.moduleAt(next) == nullptr) {
+          found.insert({next.x, next.y, next.z});
+        }
+      }
+    }
+    std::vector<Cell> cells;
+    cells.reserve(found.size());
+    for (const auto& [x, y, z] : found) cells.push_back({x, y, z});
+    return cellArray(cells);
+  }
+
+  // The cells of each target shape, in the scene's order.
+  std::vector<py::array_t<int32_t>> targets() const {
+    std::vector<py::array_t<int32_t>> out;
+    for (const target::Target& shape : scene_.targets) {
+      out.push_back(cellArray(frontend::unwrap(shape.cells())));
+    }
+    return out;
+  }
+
+  void save(const std::filesystem::path& path) const {
+    io::Scene written = scene_;
+    // Python says nothing on standard error: the grid is in the file, for Python to read.
+    frontend::declareGridForVisibleSim(written, path.string(), frontend::Reporter(/*quiet=*/true));
+    frontend::check(io::writeScene(written, path));
+  }
+
+  Scene copy() const { return *this; }
+
+  std::string repr() const {
+    return fmt::format(
+        "<datomsim.Scene {}{} modules{}>", scene_.name ? *scene_.name + ": " : "", size(),
+        scene_.targets.empty() ? "" : fmt::format(", {} target(s)", scene_.targets.size()));
+  }
+
+ private:
+  io::Scene scene_;
+};
+
+// A generated scene: its modules latched to their neighbours, and its name.
+Scene sceneOf(world::World world, std::string name);
+
+}  // namespace datomsim::python

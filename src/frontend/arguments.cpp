@@ -1,0 +1,56 @@
+#include "frontend/arguments.h"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <optional>
+
+#include "frontend/usage_error.h"
+#include "geometry/cell_text.h"
+#include "world/bounds.h"
+
+namespace datomsim::frontend {
+
+uint64_t parseSeed(const std::string& option, const std::string& text) {
+  uint64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || text.empty()) {
+    throw UsageError(
+        fmt::format("{} \"{}\" must be an integer from 0 to {}", option, text, UINT64_MAX));
+  }
+  return value;
+}
+
+geometry::Cell parseCell(const std::string& option, const std::string& text) {
+  const std::optional<geometry::Cell> cell = geometry::cellFromText(text);
+  if (!cell) throw UsageError(option + " \"" + text + "\" must be three integers x,y,z");
+  for (const int32_t value : {cell->x, cell->y, cell->z}) {
+    // Sizes reach the limit itself; cells stop one short (docs/limits.md).
+    if (value < -world::kCoordinateLimit || value > world::kCoordinateLimit) {
+      throw UsageError(
+          fmt::format("{} \"{}\": {} is outside the supported coordinate range, "
+                      "-{} to {} (docs/limits.md)",
+                      option, text, value, world::kCoordinateLimit, world::kCoordinateLimit - 1));
+    }
+  }
+  return *cell;
+}
+
+motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment,
+                                     const std::string& connectivity) {
+  motion::RuleOptions options;
+  options.rules = rules == "strict" ? motion::RuleSet::kStrict : motion::RuleSet::kPaper;
+  options.attachment = attachment != "off";
+  options.connectivity = connectivity == "on";
+  return options;
+}
+
+std::string describe(const MotionModel& model) {
+  if (model.kind == world::ModuleKind::kCatom3D) {
+    return fmt::format("catom3d, {} rolls", catom3d::toString(model.rolling));
+  }
+  return fmt::format("rules {}, attachment {}", motion::toString(model.datom.rules),
+                     model.datom.attachment ? "on" : "off");
+}
+
+}  // namespace datomsim::frontend

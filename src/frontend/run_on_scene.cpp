@@ -1,0 +1,94 @@
+#include "frontend/run_on_scene.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <utility>
+
+#include "frontend/usage_error.h"
+#include "io/scene_file.h"
+#include "motion/rule_table.h"
+#include "target/target.h"
+
+namespace datomsim::frontend {
+
+RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArguments& args,
+                     std::span<const ProgramEntry> added) {
+  experiment::RunRequest request;
+  if (!args.module.empty()) {
+    const auto kind = world::moduleKindNamed(args.module);
+    if (!kind) throw UsageError("--module: " + args.module + " not in {datom,catom3d}");
+    scene.moduleKind = *kind;
+  }
+  const auto rolling = catom3d::rollRulesNamed(args.rolling);
+  if (!rolling) throw UsageError("--rolling: " + args.rolling + " not in {symmetric,visiblesim}");
+  request.simulation.moduleKind = scene.moduleKind;
+  request.simulation.rolling = *rolling;
+  request.program = args.program;
+  request.added = added;
+  // The command line's --program check, for callers that did not pass through it (Python).
+  const Result<algorithms::ProgramInfo> info = algorithms::programInfo(args.program, added);
+  if (!info) {
+    std::string names;
+    for (const algorithms::ProgramInfo& known : algorithms::programs(added)) {
+      // Appended piece by piece: GCC 12 at -O3 takes `"," + std::string(...)` for an
+      // overlapping copy (-Wrestrict, a false alarm) once this function is compiled on its own.
+      if (!names.empty()) names += ',';
+      names += known.name;
+    }
+    throw UsageError(fmt::format("--program: {} not in {{{}}}", args.program, names));
+  }
+  if (!args.goal.empty()) request.goal = parseCell("--goal", args.goal);
+  if (!args.start.empty()) request.start = parseCell("--start", args.start);
+  request.simulation.rules = args.rules.options();
+  request.simulation.connectivity = request.simulation.rules.connectivity;
+  if (info->reshapes) {
+    // Reconfiguration keeps the ensemble in one piece unless told otherwise; the engine checks
+    // it live, and the modules' gradient judges rules without it (docs/reconfiguration.md).
+    request.simulation.connectivity = args.rules.connectivity == "on" || !args.connectivityGiven;
+    request.simulation.rules.connectivity = request.simulation.connectivity;
+  }
+  if (args.maxMotions < 0)
+    throw UsageError(fmt::format("--max-motions {}: 1 or more", args.maxMotions));
+  request.simulation.maxMotions = args.maxMotions;
+  request.simulation.seed = parseSeed("--seed", args.seed);
+  for (const auto& [option, value] :
+       {std::pair{"--delay-ms", args.delayMs}, {"--jitter-ms", args.jitterMs}}) {
+    if (!std::isfinite(value) || value < 0) {
+      throw UsageError(fmt::format("{} {}: a number of milliseconds, 0 or more", option, value));
+    }
+  }
+  request.simulation.messageDelay = Time(args.delayMs * kMillisecond);
+  request.simulation.messageJitter = Time(args.jitterMs * kMillisecond);
+  request.trace = args.wantTrace || !args.trace.empty();
+  request.description = fmt::format("{} on {}", args.program, sceneName);
+  const std::vector<target::Target>& targets =
+      args.target.empty() ? scene.targets : unwrap(io::readScene(args.target)).targets;
+  if (!args.target.empty() && targets.empty()) throw UsageError(args.target + " has no target");
+  for (const target::Target& target : targets) request.targets.push_back(unwrap(target.cells()));
+  if (args.timeoutS > 0) request.reshape.timeout = Time(args.timeoutS * kSecond);
+  if (args.untilS > 0) request.until = Time(args.untilS * kSecond);
+  // The scene's parameters for this program, then the command line's over them.
+  if (const auto inScene = scene.parameters.find(args.program); inScene != scene.parameters.end()) {
+    request.parameters = inScene->second;
+  }
+  if (!args.root.empty()) request.parameters["root"] = args.root;
+  for (const std::string& pair : args.parameters) {
+    const size_t equals = pair.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      throw UsageError("--param " + pair + ": expected KEY=VALUE");
+    }
+    request.parameters[pair.substr(0, equals)] = pair.substr(equals + 1);
+  }
+  const motion::RuleTable table;
+  RunOutput output{*info, unwrap(experiment::runProgram(std::move(scene.world), table, request)),
+                   request.parameters, std::nullopt};
+  if (output.result.reshape && !output.result.reshape->success) {
+    output.failure = "the target was not built: " + output.result.reshape->reason;
+  } else if (output.result.failure) {
+    output.failure = output.result.failure;
+  }
+  return output;
+}
+
+}  // namespace datomsim::frontend

@@ -1,0 +1,55 @@
+// `run` on a scene in memory: what the command line's `run` and Python's datomsim.run share, so
+// that both check the same things and refuse with the same messages.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "algorithms/registry.h"
+#include "datomsim/program.h"
+#include "experiment/run.h"
+#include "frontend/arguments.h"
+#include "io/scene.h"
+
+namespace datomsim::frontend {
+
+// What `run` takes, as the command line spells it (cells "x,y,z", parameters "KEY=VALUE"); the
+// Python package fills the same from its keywords.
+struct RunArguments {
+  std::string scene, program, goal, start, out, trace, target, root;
+  std::vector<std::string> parameters;
+  double timeoutS = 0, untilS = 0;
+  bool stats = false;
+  RuleArguments rules;
+  // The modules' kind (empty: the scene's) and the 3D Catom's rule set (docs/catom3d.md).
+  std::string module;
+  std::string rolling = "symmetric";
+  std::string seed = "1";
+  double delayMs = 10, jitterMs = 0;
+  int maxMotions = 0;
+  // --connectivity was given (reconfiguration keeps the ensemble connected unless told).
+  bool connectivityGiven = false;
+  // Record the trace even with no --trace file (the caller writes it).
+  bool wantTrace = false;
+};
+
+// A run and what its JSON is made of (runJson); `failure` says why it did not do what it was
+// asked (the target not built, the mobile stuck, an invariant violated), when it did not.
+struct RunOutput {
+  algorithms::ProgramInfo info;
+  experiment::RunResult result;
+  std::map<std::string, std::string> parameters;
+  std::optional<std::string> failure;
+};
+
+// `run` on a scene in memory (`sceneName` goes into the description): the checks and the
+// messages of the command line, which throws UsageError where `run` would refuse. A run that
+// fails is a result with its failure, not an error. `added`: the programs a researcher's
+// executable adds to the built-in ones.
+RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArguments& args,
+                     std::span<const ProgramEntry> added = {});
+
+}  // namespace datomsim::frontend

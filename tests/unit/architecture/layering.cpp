@@ -28,24 +28,6 @@ std::set<std::string> nameList(const std::string& cell) {
   return names;
 }
 
-struct Include {
-  std::string path;  // as written between the quotes
-  int line;
-};
-
-std::vector<Include> includesOf(const fs::path& file) {
-  static const std::regex kInclude(R"(^\s*#\s*include\s*"([^"]+)\")");
-  std::vector<Include> includes;
-  std::ifstream input(file);
-  int number = 0;
-  for (std::string line; std::getline(input, line);) {
-    ++number;
-    std::smatch match;
-    if (std::regex_search(line, match, kInclude)) includes.push_back({match[1], number});
-  }
-  return includes;
-}
-
 // The layer of a quoted include seen from a file of `layer`: its first folder when that is a
 // folder of the tree, else the file's own folder (a sibling header).
 std::string layerOfInclude(const fs::path& root, const std::string& layer,
@@ -63,8 +45,23 @@ fs::path resolve(const fs::path& root, const std::string& layer, const std::stri
   return root / layer / path;
 }
 
-// Each layer and every layer below it, through the "uses" column.
-std::map<std::string, std::set<std::string>> closures(const std::map<std::string, Layer>& layers) {
+}  // namespace
+
+std::vector<Include> includesOf(const fs::path& file) {
+  static const std::regex kInclude(R"(^\s*#\s*include\s*"([^"]+)\")");
+  std::vector<Include> includes;
+  std::ifstream input(file);
+  int number = 0;
+  for (std::string line; std::getline(input, line);) {
+    ++number;
+    std::smatch match;
+    if (std::regex_search(line, match, kInclude)) includes.push_back({match[1], number});
+  }
+  return includes;
+}
+
+std::map<std::string, std::set<std::string>> layerClosures(
+    const std::map<std::string, Layer>& layers) {
   std::map<std::string, std::set<std::string>> reached;
   std::function<const std::set<std::string>&(const std::string&)> visit =
       [&](const std::string& name) -> const std::set<std::string>& {
@@ -83,18 +80,18 @@ std::map<std::string, std::set<std::string>> closures(const std::map<std::string
   return reached;
 }
 
-}  // namespace
-
 std::map<std::string, Layer> readLayerTable(const std::string& markdown) {
   std::map<std::string, Layer> layers;
   std::stringstream lines(markdown);
   for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("## ", 0) == 0) break;
     if (line.rfind("| `", 0) != 0) continue;
     std::vector<std::string> cells;
     std::stringstream row(line.substr(1));
     for (std::string cell; std::getline(row, cell, '|');) cells.push_back(cell);
     if (cells.size() < 4) continue;
     Layer layer;
+    layer.library = trim(cells[1]);
     layer.uses = nameList(cells[3]);
     if (cells.size() >= 5) layer.never = nameList(cells[4]);
     layers[trim(cells[0])] = layer;
@@ -102,10 +99,35 @@ std::map<std::string, Layer> readLayerTable(const std::string& markdown) {
   return layers;
 }
 
+std::map<std::string, FrontEnd> readFrontEndTable(const std::string& markdown,
+                                                  const std::map<std::string, Layer>& layers) {
+  std::map<std::string, FrontEnd> frontEnds;
+  std::stringstream lines(markdown);
+  bool inSection = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("## ", 0) == 0) inSection = line == "## Front ends";
+    if (!inSection || line.rfind("| `", 0) != 0) continue;
+    std::vector<std::string> cells;
+    std::stringstream row(line.substr(1));
+    for (std::string cell; std::getline(row, cell, '|');) cells.push_back(cell);
+    if (cells.size() < 3) continue;
+    FrontEnd frontEnd;
+    for (const std::string& name : nameList(cells[2])) {
+      if (layers.count(name) && name.find('/') == std::string::npos) {
+        frontEnd.layers.insert(name);
+      } else {
+        frontEnd.frontEnds.insert(name);
+      }
+    }
+    frontEnds[trim(cells[0])] = frontEnd;
+  }
+  return frontEnds;
+}
+
 std::vector<std::string> layeringBreaches(const fs::path& root,
                                           const std::map<std::string, Layer>& layers) {
   std::vector<std::string> breaches;
-  const auto allowed = closures(layers);
+  const auto allowed = layerClosures(layers);
   std::vector<fs::path> folders;
   for (const auto& entry : fs::directory_iterator(root)) {
     if (entry.is_directory()) folders.push_back(entry.path());

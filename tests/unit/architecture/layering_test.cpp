@@ -19,6 +19,10 @@ std::map<std::string, Layer> projectLayers() {
   return readLayerTable(readText(kSource / "docs" / "architecture.md"));
 }
 
+std::map<std::string, FrontEnd> projectFrontEnds() {
+  return readFrontEndTable(readText(kSource / "docs" / "architecture.md"), projectLayers());
+}
+
 std::string joined(const std::vector<std::string>& lines) {
   std::string text;
   for (const std::string& line : lines) text += line + "\n";
@@ -45,6 +49,25 @@ TEST(Layering, TheTableNamesTheLayersAndWhatTheyUse) {
 
 TEST(Layering, EveryIncludeOfSrcObeysTheTable) {
   const auto breaches = layeringBreaches(kSource / "src", projectLayers());
+  EXPECT_TRUE(breaches.empty()) << joined(breaches);
+}
+
+TEST(Layering, TheFrontEndsAreAllNamed) {
+  const auto frontEnds = projectFrontEnds();
+  for (const std::string name : {"apps/datomsim", "python", "bench", "fuzz", "examples"}) {
+    EXPECT_TRUE(frontEnds.count(name)) << name << " has no row under \"## Front ends\"";
+  }
+  // The researchers' examples stand on the public API alone.
+  EXPECT_TRUE(frontEnds.at("examples").layers.empty());
+}
+
+TEST(Layering, EveryIncludeOfTheFrontEndsObeysTheirRows) {
+  const auto breaches = frontEndBreaches(kSource, projectLayers(), projectFrontEnds());
+  EXPECT_TRUE(breaches.empty()) << joined(breaches);
+}
+
+TEST(Layering, EveryCMakeFileLinksOnlyTheLayersItUses) {
+  const auto breaches = linkBreaches(kSource, projectLayers(), projectFrontEnds());
   EXPECT_TRUE(breaches.empty()) << joined(breaches);
 }
 
@@ -117,6 +140,54 @@ TEST(Layering, CatchesAFolderThatIsNoLayer) {
   const auto breaches = layeringBreaches(tree.path(), readLayerTable("| `low` | `l` | - | - |\n"));
   ASSERT_EQ(breaches.size(), 1u) << joined(breaches);
   EXPECT_NE(breaches[0].find("stray is not a layer of the table"), std::string::npos);
+}
+
+TEST(Layering, CatchesAFrontEndReachingPastItsRow) {
+  TemporaryDirectory tree;
+  writeFile(tree.path() / "src" / "low" / "a.h", "#pragma once\n");
+  writeFile(tree.path() / "src" / "high" / "b.h", "#pragma once\n");
+  writeFile(tree.path() / "tool" / "own.h", "#pragma once\n");
+  writeFile(tree.path() / "tool" / "main.cpp",
+            "#include \"datomsim/program.h\"\n#include \"own.h\"\n#include \"low/a.h\"\n"
+            "#include \"high/b.h\"\n#include \"../other/c.h\"\n#include \"missing.h\"\n");
+  writeFile(tree.path() / "tool" / "CMakeLists.txt",
+            "# datomsim_high in a comment is no link\n"
+            "target_link_libraries(tool PRIVATE datomsim_low\n  datomsim_high)\n");
+  writeFile(tree.path() / "src" / "low" / "CMakeLists.txt",
+            "target_link_libraries(datomsim_low PUBLIC datomsim_high)\n");
+  const std::string table =
+      "| `low` | `datomsim_low` | below | - | |\n"
+      "| `high` | `datomsim_high` | above | low | |\n"
+      "## Front ends\n"
+      "| `tool` | a tool | low |\n"
+      "| `gone` | a folder that is not there | - |\n";
+  const auto layers = readLayerTable(table);
+  ASSERT_EQ(layers.size(), 2u);
+  const auto frontEnds = readFrontEndTable(table, layers);
+  ASSERT_EQ(frontEnds.size(), 2u);
+  EXPECT_EQ(frontEnds.at("tool").layers, std::set<std::string>{"low"});
+
+  const auto breaches = frontEndBreaches(tree.path(), layers, frontEnds);
+  ASSERT_EQ(breaches.size(), 4u) << joined(breaches);
+  EXPECT_NE(breaches[0].find("front end gone is not a folder"), std::string::npos) << breaches[0];
+  EXPECT_NE(breaches[1].find("main.cpp:4 includes \"high/b.h\": tool does not use layer high"),
+            std::string::npos)
+      << breaches[1];
+  EXPECT_NE(breaches[2].find("main.cpp:5 includes \"../other/c.h\": a path out of tool"),
+            std::string::npos)
+      << breaches[2];
+  EXPECT_NE(breaches[3].find("main.cpp:6 includes \"missing.h\": neither a header of tool"),
+            std::string::npos)
+      << breaches[3];
+
+  const auto links = linkBreaches(tree.path(), layers, frontEnds);
+  ASSERT_EQ(links.size(), 2u) << joined(links);
+  EXPECT_NE(links[0].find("low/CMakeLists.txt:1 links datomsim_high: layer low does not use"),
+            std::string::npos)
+      << links[0];
+  EXPECT_NE(links[1].find("tool/CMakeLists.txt:3 links datomsim_high: tool does not use layer"),
+            std::string::npos)
+      << links[1];
 }
 
 }  // namespace

@@ -80,12 +80,14 @@ motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string
   return options;
 }
 
+std::unique_ptr<const motion::MotionModel> modelOf(const MotionModel& model,
+                                                   const motion::RuleTable& table) {
+  return catom3d::motionModelFor(model.kind, table, model.datom, model.rolling);
+}
+
 std::string describe(const MotionModel& model) {
-  if (model.kind == world::ModuleKind::kCatom3D) {
-    return fmt::format("catom3d, {} rolls", catom3d::toString(model.rolling));
-  }
-  return fmt::format("rules {}, attachment {}", motion::toString(model.datom.rules),
-                     model.datom.attachment ? "on" : "off");
+  const motion::RuleTable table;
+  return modelOf(model, table)->describe();
 }
 
 void ModuleArguments::addTo(CLI::App& command) {

@@ -2,16 +2,20 @@
 #pragma once
 
 #include <initializer_list>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "catom3d/catom_rolls.h"
 #include "catom3d/rolling.h"
 #include "geometry/cell.h"
 #include "io/scene.h"
 #include "motion/motion.h"
+#include "motion/motion_model.h"
+#include "motion/rule_table.h"
 #include "world/module_kind.h"
 
 namespace datomsim::app {
@@ -64,15 +68,19 @@ struct RuleArguments {
 };
 
 // Which module's motions a command applies, and their options: the Datom's rules, or the 3D
-// Catom's rolls (docs/catom3d.md).
+// Catom's rolls (docs/catom3d.md). The options as given; the model they choose is modelOf's.
 struct MotionModel {
   world::ModuleKind kind = world::ModuleKind::kDatom;
   motion::RuleOptions datom;
   catom3d::RollRules rolling = catom3d::RollRules::kSymmetric;
 };
 
-// "datom, rules paper, attachment on" or "catom3d, symmetric rolls": what pictures and
-// reports name.
+// The motion model the options choose (motion/motion_model.h); `table` must outlive it.
+std::unique_ptr<const motion::MotionModel> modelOf(const MotionModel& model,
+                                                   const motion::RuleTable& table);
+
+// "rules paper, attachment on" or "catom3d, symmetric rolls": what pictures and reports name
+// (the model's describe()).
 std::string describe(const MotionModel& model);
 
 // The kind --module names, or the scene's when it names none (the name checked by the option).

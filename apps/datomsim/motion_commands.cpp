@@ -9,32 +9,30 @@
 #include <tuple>
 
 #include "arguments.h"
-#include "catom3d/rolling_reach.h"
+#include "catom3d/catom_rolls.h"
 #include "commands.h"
 #include "experiment/run.h"
 #include "geometry/lattice.h"
 #include "io/scene_file.h"
-#include "motion/bidirectionality.h"
+#include "motion/datom_rules.h"
 #include "motion/reach.h"
 #include "motion_json.h"
 
 namespace datomsim::app {
 namespace {
 
-// Theorem 2 for rolls, for each rule set asked.
-void verifyRolls(const world::World& world, const std::vector<std::string>& ruleSets) {
-  const catom3d::RollTable table;
+// Theorem 2 for each model asked; throws when one fails it.
+void verifyModels(const world::World& world,
+                  const std::vector<std::unique_ptr<const motion::MotionModel>>& models) {
   size_t failures = 0;
-  for (const std::string& name : ruleSets) {
-    const MotionModel model{world::ModuleKind::kCatom3D, {}, *catom3d::rollRulesNamed(name)};
-    const auto report = catom3d::checkBidirectionality(world, table, model.rolling);
-    fmt::print("{}: {} cells, {} motions, {} counterexamples\n", describe(model),
+  for (const auto& model : models) {
+    const auto report = model->checkBidirectionality(world);
+    fmt::print("{}: {} cells, {} motions, {} counterexamples\n", model->describe(),
                report.cellsChecked, report.motionsChecked, report.counterexamples.size());
     for (const auto& counterexample : report.counterexamples) {
-      const catom3d::RollMotion& m = counterexample.forward;
-      fmt::print("  {} -> {} (roll about pivot {} through the {} face) has no way back\n",
-                 geometry::toString(m.from), geometry::toString(m.goal), m.pivot.value,
-                 catom3d::toString(m.roll->face));
+      const motion::Motion& m = counterexample.forward;
+      fmt::print("  {} -> {} ({}) has no way back\n", geometry::toString(m.from),
+                 geometry::toString(m.goal), model->describe(m));
     }
     failures += report.counterexamples.size();
   }
@@ -201,29 +199,21 @@ void addVerify(CLI::App& app) {
     const io::Scene scene = unwrap(io::readScene(args->scene));
     const world::ModuleKind kind = kindFor(args->module, scene);
     refuseOtherKindsOptions(*command, kind, {"--rules", "--attachment"});
-    if (kind == world::ModuleKind::kCatom3D) {
-      verifyRolls(scene.world, args->rolling);
-      return;
-    }
     const motion::RuleTable table;
-    size_t failures = 0;
-    for (const std::string& rules : args->rules) {
-      for (const std::string& attachment : args->attachment) {
-        const motion::RuleOptions options = parseRuleOptions(rules, attachment);
-        const auto report = motion::checkBidirectionality(scene.world, table, options);
-        fmt::print("{}: {} cells, {} motions, {} counterexamples\n",
-                   describe(MotionModel{world::ModuleKind::kDatom, options, {}}),
-                   report.cellsChecked, report.motionsChecked, report.counterexamples.size());
-        for (const auto& counterexample : report.counterexamples) {
-          const motion::Motion& m = counterexample.forward;
-          fmt::print("  {} -> {} (turn {} about pivot {} with piston {}) has no way back\n",
-                     geometry::toString(m.from), geometry::toString(m.goal),
-                     motion::toString(m.rule->turn), m.pivot.value, m.rule->up);
+    std::vector<std::unique_ptr<const motion::MotionModel>> models;
+    if (kind == world::ModuleKind::kCatom3D) {
+      for (const std::string& rolling : args->rolling) {
+        models.push_back(std::make_unique<catom3d::CatomRolls>(*catom3d::rollRulesNamed(rolling)));
+      }
+    } else {
+      for (const std::string& rules : args->rules) {
+        for (const std::string& attachment : args->attachment) {
+          models.push_back(
+              std::make_unique<motion::DatomRules>(table, parseRuleOptions(rules, attachment)));
         }
-        failures += report.counterexamples.size();
       }
     }
-    if (failures > 0) throw CheckFailed(fmt::format("{} counterexamples to theorem 2", failures));
+    verifyModels(scene.world, models);
   });
 }
 
@@ -253,26 +243,13 @@ ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
                     "must be next to a module of the scene)",
                     geometry::toString(goal)));
   }
-  std::vector<geometry::Cell> path;
-  if (model.kind == world::ModuleKind::kCatom3D) {
-    const catom3d::RollTable table;
-    motion::DistanceMap map = unwrap(catom3d::reach(scene.world, table, goal, model.rolling));
-    if (start) {
-      path.push_back(*start);
-      for (const catom3d::RollMotion& m :
-           unwrap(catom3d::followGradient(scene.world, table, map, *start, model.rolling))) {
-        path.push_back(m.goal);
-      }
-    }
-    return {std::move(scene.world), mobile.module.has_value(), std::move(map), std::move(path)};
-  }
-  const motion::RuleOptions& options = model.datom;
   const motion::RuleTable table;
-  motion::DistanceMap map = unwrap(motion::reach(scene.world, table, goal, options));
+  const auto motions = modelOf(model, table);
+  motion::DistanceMap map = unwrap(motions->reach(scene.world, goal));
+  std::vector<geometry::Cell> path;
   if (start) {
     path.push_back(*start);
-    for (const motion::Motion& m :
-         unwrap(motion::followGradient(scene.world, table, map, *start))) {
+    for (const motion::Motion& m : unwrap(motions->followGradient(scene.world, map, *start))) {
       path.push_back(m.goal);
     }
   }

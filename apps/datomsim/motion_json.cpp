@@ -49,10 +49,9 @@ std::string movesJson(const Cell& at, const std::vector<motion::Evaluation>& mov
   for (const motion::Evaluation& evaluation : moves) {
     nlohmann::ordered_json entry;
     if (const auto* motion = std::get_if<motion::Motion>(&evaluation)) {
-      const motion::Rule& rule = *motion->rule;
       entry["pivot"] = cellJson(motion->pivotCell);
-      entry["piston"] = rule.up;
-      entry["turn"] = motion::toString(rule.turn);
+      entry["piston"] = motion::pistonOfRule(motion->rule);
+      entry["turn"] = motion::toString(motion::turnOfRule(motion->rule));
       entry["goal"] = cellJson(motion->goal);
       entry["valid"] = true;
       entry["refusal"] = nullptr;
@@ -65,12 +64,10 @@ std::string movesJson(const Cell& at, const std::vector<motion::Evaluation>& mov
       entry["deformations"] = deformations;
     } else {
       const auto& refusal = std::get<motion::Refusal>(evaluation);
-      const motion::Rule& rule = *refusal.rule;
-      const Cell pivotCell = at - rule.mobileOffset;
-      entry["pivot"] = cellJson(pivotCell);
-      entry["piston"] = rule.up;
-      entry["turn"] = motion::toString(rule.turn);
-      entry["goal"] = cellJson(pivotCell + rule.goalOffset);
+      entry["pivot"] = cellJson(refusal.pivotCell);
+      entry["piston"] = motion::pistonOfRule(refusal.rule);
+      entry["turn"] = motion::toString(motion::turnOfRule(refusal.rule));
+      entry["goal"] = cellJson(refusal.goal);
       entry["valid"] = false;
       entry["refusal"] = motion::describe(refusal);
       entry["deformations"] = nlohmann::ordered_json::array();
@@ -93,18 +90,16 @@ std::string movesTable(const Cell& at, const std::vector<motion::Evaluation>& mo
                                geometry::toString(d.cell), d.firstAxis);
         if (d.secondAxis >= 0) helpers += fmt::format(" then {}", d.secondAxis);
       }
-      valid +=
-          fmt::format("  {:<11} {:>6}  {:<5}  {:<11} {}\n", geometry::toString(motion->pivotCell),
-                      motion->rule->up, motion::toString(motion->rule->turn),
-                      geometry::toString(motion->goal), helpers.empty() ? "no helper" : helpers);
+      valid += fmt::format(
+          "  {:<11} {:>6}  {:<5}  {:<11} {}\n", geometry::toString(motion->pivotCell),
+          motion::pistonOfRule(motion->rule), motion::toString(motion::turnOfRule(motion->rule)),
+          geometry::toString(motion->goal), helpers.empty() ? "no helper" : helpers);
     } else {
       const auto& refusal = std::get<motion::Refusal>(evaluation);
-      const motion::Rule& rule = *refusal.rule;
-      const Cell pivotCell = at - rule.mobileOffset;
-      refused +=
-          fmt::format("  {:<11} {:>6}  {:<5}  {:<11} {}\n", geometry::toString(pivotCell), rule.up,
-                      motion::toString(rule.turn), geometry::toString(pivotCell + rule.goalOffset),
-                      motion::describe(refusal));
+      refused += fmt::format(
+          "  {:<11} {:>6}  {:<5}  {:<11} {}\n", geometry::toString(refusal.pivotCell),
+          motion::pistonOfRule(refusal.rule), motion::toString(motion::turnOfRule(refusal.rule)),
+          geometry::toString(refusal.goal), motion::describe(refusal));
     }
   }
   const std::string header =

@@ -59,9 +59,9 @@ std::string describeCutOff(std::span<const ModuleId> modules) {
 }
 
 std::string describe(const Refusal& refusal) {
-  const Rule& rule = *refusal.rule;
-  const std::string head = fmt::format(
-      "turn {} about pivot {} with piston {}: ", toString(rule.turn), refusal.pivot.value, rule.up);
+  const std::string head =
+      fmt::format("turn {} about pivot {} with piston {}: ", toString(turnOfRule(refusal.rule)),
+                  refusal.pivot.value, pistonOfRule(refusal.rule));
   const std::string cell =
       fmt::format("cell {} {}", toString(refusal.role), geometry::toString(refusal.cell));
   switch (refusal.reason) {
@@ -240,7 +240,7 @@ bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mo
   auto refuse = [&](CellRole role, const Cell& cell, RefusalReason reason, const Module* blocker,
                     int axis = -1) {
     if (refusal) {
-      refusal->rule = &rule;
+      refusal->rule = rule.index;
       refusal->role = role;
       refusal->cell = cell;
       refusal->reason = reason;
@@ -349,9 +349,11 @@ Evaluation evaluate(const World& world, const Rule& rule, const Mobile& mobile,
   const Module* pivot = world.moduleAt(pivotCell);
   Refusal refusal;
   refusal.pivot = pivot->id;
+  refusal.pivotCell = pivotCell;
+  refusal.goal = pivotCell + rule.goalOffset;
   if (const Module* self = realMobile(world, mobile)) {
     if (!world.isLatched(*self, geometry::oppositeDirection(rule.mobileDirection))) {
-      refusal.rule = &rule;
+      refusal.rule = rule.index;
       refusal.cell = pivotCell;
       refusal.reason = RefusalReason::kMobileNotLatched;
       return refusal;
@@ -362,7 +364,7 @@ Evaluation evaluate(const World& world, const Rule& rule, const Mobile& mobile,
              compressions)) {
     return refusal;
   }
-  motion.rule = &rule;
+  motion.rule = rule.index;
   motion.pivot = pivot->id;
   motion.pivotCell = pivotCell;
   motion.from = mobile.cell;

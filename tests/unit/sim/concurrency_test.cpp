@@ -294,7 +294,8 @@ struct Parts {
   MotionExecutor motions;
   Parts(world::World w, MotionLimits limits)
       : world(std::move(w)),
-        motions(world, {}, mechanics, agenda, announce, {kSecond, 500 * kMillisecond}, limits) {}
+        motions(world, table(), {}, mechanics, agenda, announce, {kSecond, 500 * kMillisecond},
+                limits) {}
 };
 
 TEST(Invariants, ABlockingModuleThatLetsGoWhileTheMobilePassesIsCaught) {

@@ -336,5 +336,25 @@ TEST(Invariants, ALatchBrokenThatSplitsTheEnsembleIsCaughtWithConnectivityOn) {
   EXPECT_EQ(*violation, "the ensemble fell apart: module 38 would be cut off from the rest");
 }
 
+// A motion names its rule by its index in the table of the modules' motion model: an index
+// outside it is no motion of theirs, whichever the kind.
+TEST(MotionRequests, ARuleOutsideTheModelsTableIsRefused) {
+  for (const auto& [kind, count] :
+       {std::pair{world::ModuleKind::kDatom, 72}, std::pair{world::ModuleKind::kCatom3D, 96}}) {
+    Parts parts(floorWith({{2, 2, 1}}), {0, false, kind});
+    const world::Module& mobile = *parts.world.moduleAt({2, 2, 1});
+    motion::Motion request;
+    request.from = mobile.cell;
+    for (const int rule : {-1, count}) {
+      request.rule = rule;
+      const MoveResult result = parts.motions.request(*parts.world.indexOf(mobile.id), request);
+      ASSERT_FALSE(result.ok());
+      EXPECT_EQ(result.refusal().reason, MoveRefusal::Reason::kInvalidRequest);
+      EXPECT_NE(result.refusal().text.find("names no rule"), std::string::npos)
+          << result.refusal().text;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace datomsim::sim

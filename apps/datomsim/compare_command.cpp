@@ -135,10 +135,10 @@ void addCompareCommand(CLI::App& app) {
         if (fixed.cellState(from) != world::CellState::kEmpty) continue;
         for (const catom3d::RollEvaluation& evaluation :
              catom3d::evaluateAll(fixed, rolls, {from, std::nullopt}, catom.model.rolling)) {
-          if (const auto* roll = std::get_if<catom3d::RollMotion>(&evaluation)) {
+          if (const auto* roll = std::get_if<motion::Motion>(&evaluation)) {
             entered |= roll->goal == cell;
           } else if (const auto& refusal = std::get<catom3d::RollRefusal>(evaluation);
-                     from - refusal.roll->mobileOffset + refusal.roll->goalOffset == cell) {
+                     refusal.goal == cell) {
             solid |= refusal.reason == catom3d::RollRefusalReason::kCellOutsideWorld;
           }
         }

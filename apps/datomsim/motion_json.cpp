@@ -124,12 +124,11 @@ struct RollLine {
 std::vector<RollLine> rollLines(const Cell& at, const std::vector<catom3d::RollEvaluation>& rolls) {
   std::vector<RollLine> lines;
   for (const catom3d::RollEvaluation& evaluation : rolls) {
-    if (const auto* roll = std::get_if<catom3d::RollMotion>(&evaluation)) {
-      lines.push_back({roll->pivotCell, roll->goal, roll->roll->face, {}});
+    if (const auto* roll = std::get_if<motion::Motion>(&evaluation)) {
+      lines.push_back({roll->pivotCell, roll->goal, catom3d::faceOf(roll->rule), {}});
     } else {
       const auto& refusal = std::get<catom3d::RollRefusal>(evaluation);
-      const Cell pivot = at - refusal.roll->mobileOffset;
-      lines.push_back({pivot, pivot + refusal.roll->goalOffset, refusal.roll->face,
+      lines.push_back({refusal.pivotCell, refusal.goal, catom3d::faceOf(refusal.roll),
                        catom3d::describe(refusal, at)});
     }
   }

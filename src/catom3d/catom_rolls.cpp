@@ -11,31 +11,13 @@ namespace datomsim::catom3d {
 
 using geometry::Cell;
 
-namespace {
-
-motion::Motion motionOf(const RollMotion& rolled) {
-  motion::Motion motion;
-  motion.rule = rolled.roll->index;
-  motion.pivot = rolled.pivot;
-  motion.pivotCell = rolled.pivotCell;
-  motion.from = rolled.from;
-  motion.goal = rolled.goal;
-  return motion;
-}
-
-}  // namespace
-
 std::string CatomRolls::describe() const {
   return fmt::format("catom3d, {} rolls", toString(rules_));
 }
 
 std::vector<motion::Motion> CatomRolls::validMotions(const world::World& world,
                                                      const Mobile& mobile) const {
-  std::vector<motion::Motion> out;
-  for (const RollMotion& rolled : validRolls(world, table_, mobile, rules_)) {
-    out.push_back(motionOf(rolled));
-  }
-  return out;
+  return validRolls(world, table_, mobile, rules_);
 }
 
 std::vector<motion::Evaluation> CatomRolls::programMotions(const world::World& world,
@@ -48,8 +30,8 @@ std::vector<motion::Evaluation> CatomRolls::programMotions(const world::World& w
 std::variant<motion::Motion, MoveRefusal> CatomRolls::judge(
     const world::World& world, int rule, const Mobile& mobile,
     motion::Compressions /*compressions*/) const {
-  const RollEvaluation judged = evaluate(world, roll(rule), mobile, rules_);
-  if (const auto* rolled = std::get_if<RollMotion>(&judged)) return motionOf(*rolled);
+  RollEvaluation judged = evaluate(world, roll(rule), mobile, rules_);
+  if (auto* rolled = std::get_if<motion::Motion>(&judged)) return std::move(*rolled);
   const RollRefusal& refusal = std::get<RollRefusal>(judged);
   MoveRefusal refused;
   refused.reason = MoveRefusal::Reason::kRule;

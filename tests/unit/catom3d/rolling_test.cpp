@@ -94,7 +94,7 @@ TEST(Rolling, AloneWithItsPivotAMobileRollsToEachOfItsFourGoalsThroughBothFaces)
   const auto rolls = validRolls(world, table(), {kM, std::nullopt}, RollRules::kSymmetric);
   ASSERT_EQ(rolls.size(), 8u);
   std::set<Cell> goals;
-  for (const RollMotion& roll : rolls) goals.insert(roll.goal);
+  for (const motion::Motion& roll : rolls) goals.insert(roll.goal);
   EXPECT_EQ(goals, (std::set<Cell>{{3, 3, 4}, {3, 2, 4}, {4, 3, 2}, {4, 4, 2}}));
 }
 
@@ -110,13 +110,13 @@ TEST(Rolling, AModuleInTheTetrahedralHoleBlocksTheHexagonalRollOnly) {
   EXPECT_EQ(describe(refusal, kM),
             "roll from 4,3,3 to 3,3,4 about pivot 1 at 3,3,3 through the hexagonal face: cell "
             "3,2,4 (face) must be empty but holds module 2");
-  EXPECT_TRUE(std::holds_alternative<RollMotion>(judge(world, Face::kOctagonal)));
+  EXPECT_TRUE(std::holds_alternative<motion::Motion>(judge(world, Face::kOctagonal)));
 }
 
 TEST(Rolling, ACornerOfTheOctahedralHoleBlocksTheOctagonalRollOnly) {
   for (const Cell& corner : {kA, kB, kW}) {
     const world::World world = WorldBuilder().module(kP).module(corner).build();
-    EXPECT_TRUE(std::holds_alternative<RollMotion>(judge(world, Face::kHexagonal)))
+    EXPECT_TRUE(std::holds_alternative<motion::Motion>(judge(world, Face::kHexagonal)))
         << geometry::toString(corner);
     const auto octagonal = judge(world, Face::kOctagonal);
     ASSERT_TRUE(std::holds_alternative<RollRefusal>(octagonal)) << geometry::toString(corner);
@@ -159,8 +159,8 @@ TEST(Rolling, ACatomCannotRollIntoACellBetweenTwoOppositeModules) {
         << describe(refusal, kM);
   }
   // VisibleSim's engine locks the goal for octagonal rolls only.
-  EXPECT_TRUE(
-      std::holds_alternative<RollMotion>(judge(world, Face::kHexagonal, RollRules::kVisibleSim)));
+  EXPECT_TRUE(std::holds_alternative<motion::Motion>(
+      judge(world, Face::kHexagonal, RollRules::kVisibleSim)));
   EXPECT_EQ(std::get<RollRefusal>(judge(world, Face::kOctagonal, RollRules::kVisibleSim)).reason,
             RollRefusalReason::kGoalBetweenModules);
 }
@@ -171,8 +171,8 @@ TEST(Rolling, NorCanItRollOutOfOneWithTheSymmetricRules) {
   const auto symmetric = judge(world, Face::kHexagonal);
   ASSERT_TRUE(std::holds_alternative<RollRefusal>(symmetric));
   EXPECT_EQ(std::get<RollRefusal>(symmetric).reason, RollRefusalReason::kStartBetweenModules);
-  EXPECT_TRUE(
-      std::holds_alternative<RollMotion>(judge(world, Face::kHexagonal, RollRules::kVisibleSim)));
+  EXPECT_TRUE(std::holds_alternative<motion::Motion>(
+      judge(world, Face::kHexagonal, RollRules::kVisibleSim)));
 }
 
 TEST(Rolling, TheRealMobileMustBeLatchedToThePivot) {
@@ -247,7 +247,7 @@ TEST(RollReach, EveryCellOnTheMapHasARollOneStepCloser) {
     for (const auto& [cell, distance] : map->sorted()) {
       if (distance == 0) continue;
       bool closer = false;
-      for (const RollMotion& m : validRolls(world, table(), {cell, std::nullopt}, rules)) {
+      for (const motion::Motion& m : validRolls(world, table(), {cell, std::nullopt}, rules)) {
         closer |= map->distanceAt(m.goal) == distance - 1;
       }
       EXPECT_TRUE(closer) << geometry::toString(cell) << " at " << distance;

@@ -72,19 +72,22 @@ class DatomRules final : public MotionModel {
   void forEachCellOneMotionAway(const world::World& world, const geometry::Cell& cell, Known known,
                                 Add add, uint64_t& evaluations) const {
     const Mobile mobile{cell, std::nullopt};
+    // Counted here, then added once: a counter behind a reference would be stored at every rule.
+    uint64_t judged = 0;
     for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
       const Rule* rules = table_.rulesForMobileDirection(direction);
       const geometry::Cell pivotCell = cell - rules[0].mobileOffset;
       if (!world.moduleAt(pivotCell)) continue;
+      judged += RuleTable::kRulesPerNeighbour;
       for (int i = 0; i < RuleTable::kRulesPerNeighbour; ++i) {
         const Rule& rule = rules[i];
         const geometry::Cell target = pivotCell + rule.goalOffset;
-        ++evaluations;
         if (known(target)) continue;
         if (!holds(world, rule, mobile, options_)) continue;
         add(target);
       }
     }
+    evaluations += judged;
   }
   bool movesTo(const world::World& world, const geometry::Cell& from,
                const geometry::Cell& to) const;

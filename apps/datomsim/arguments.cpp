@@ -94,8 +94,8 @@ void refuseOtherKindsOptions(const CLI::App& command, world::ModuleKind kind,
   }
 }
 
-MotionModel ModuleArguments::modelFor(const io::Scene& scene, const RuleArguments& rules) const {
-  MotionModel model;
+MotionChoice ModuleArguments::modelFor(const io::Scene& scene, const RuleArguments& rules) const {
+  MotionChoice model;
   model.kind = kindFor(module, scene);
   model.datom = rules.options();
   model.rolling = *catom3d::rollRulesNamed(rolling);

@@ -16,7 +16,7 @@
 namespace datomsim::app {
 
 using frontend::describe;
-using frontend::MotionModel;
+using frontend::MotionChoice;
 using frontend::parseCell;
 using frontend::parseRuleOptions;
 using frontend::parseSeed;
@@ -48,7 +48,7 @@ struct ModuleArguments {
   std::string rolling = "symmetric";
 
   void addTo(CLI::App& command);
-  MotionModel modelFor(const io::Scene& scene, const RuleArguments& rules) const;
+  MotionChoice modelFor(const io::Scene& scene, const RuleArguments& rules) const;
 
  private:
   CLI::App* command_ = nullptr;

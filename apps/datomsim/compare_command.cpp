@@ -27,7 +27,7 @@ nlohmann::ordered_json cellJson(const Cell& cell) {
 
 // One kind's side of the comparison.
 struct Side {
-  MotionModel model;
+  MotionChoice model;
   std::string name;                    // "the Datom", "the 3D Catom"
   std::optional<ReachOutput> reached;  // made once the scene is read
   std::vector<Cell> only;              // cells this kind reaches and the other does not, sorted
@@ -135,10 +135,10 @@ void addCompareCommand(CLI::App& app, const Reporter& reporter) {
         if (fixed.cellState(from) != world::CellState::kEmpty) continue;
         for (const catom3d::RollEvaluation& evaluation :
              catom3d::evaluateAll(fixed, rolls, {from, std::nullopt}, catom.model.rolling)) {
-          if (const auto* roll = std::get_if<catom3d::RollMotion>(&evaluation)) {
+          if (const auto* roll = std::get_if<motion::Motion>(&evaluation)) {
             entered |= roll->goal == cell;
           } else if (const auto& refusal = std::get<catom3d::RollRefusal>(evaluation);
-                     from - refusal.roll->mobileOffset + refusal.roll->goalOffset == cell) {
+                     refusal.goal == cell) {
             solid |= refusal.reason == catom3d::RollRefusalReason::kCellOutsideWorld;
           }
         }

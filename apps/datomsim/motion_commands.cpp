@@ -9,31 +9,29 @@
 #include <tuple>
 
 #include "arguments.h"
-#include "catom3d/rolling_reach.h"
+#include "catom3d/catom_rolls.h"
 #include "commands.h"
 #include "frontend/motion_json.h"
 #include "geometry/lattice.h"
 #include "io/scene_file.h"
-#include "motion/bidirectionality.h"
+#include "motion/datom_rules.h"
 #include "motion/reach.h"
 
 namespace datomsim::app {
 namespace {
 
-// Theorem 2 for rolls, for each rule set asked.
-void verifyRolls(const world::World& world, const std::vector<std::string>& ruleSets) {
-  const catom3d::RollTable table;
+// Theorem 2 for each model asked; throws when one fails it.
+void verifyModels(const world::World& world,
+                  const std::vector<std::unique_ptr<const motion::MotionModel>>& models) {
   size_t failures = 0;
-  for (const std::string& name : ruleSets) {
-    const MotionModel model{world::ModuleKind::kCatom3D, {}, *catom3d::rollRulesNamed(name)};
-    const auto report = catom3d::checkBidirectionality(world, table, model.rolling);
-    fmt::print("{}: {} cells, {} motions, {} counterexamples\n", describe(model),
+  for (const auto& model : models) {
+    const auto report = model->checkBidirectionality(world);
+    fmt::print("{}: {} cells, {} motions, {} counterexamples\n", model->describe(),
                report.cellsChecked, report.motionsChecked, report.counterexamples.size());
     for (const auto& counterexample : report.counterexamples) {
-      const catom3d::RollMotion& m = counterexample.forward;
-      fmt::print("  {} -> {} (roll about pivot {} through the {} face) has no way back\n",
-                 geometry::toString(m.from), geometry::toString(m.goal), m.pivot.value,
-                 catom3d::toString(m.roll->face));
+      const motion::Motion& m = counterexample.forward;
+      fmt::print("  {} -> {} ({}) has no way back\n", geometry::toString(m.from),
+                 geometry::toString(m.goal), model->describe(m));
     }
     failures += report.counterexamples.size();
   }
@@ -105,7 +103,7 @@ void addReach(CLI::App& app, const Reporter& reporter) {
     const std::optional<geometry::Cell> start =
         args->start.empty() ? std::nullopt : std::optional(parseCell("--start", args->start));
     io::Scene scene = unwrap(io::readScene(args->scene));
-    const MotionModel model = args->module.modelFor(scene, args->rules);
+    const MotionChoice model = args->module.modelFor(scene, args->rules);
     const ReachOutput reached = reachOnScene(std::move(scene), goal, start, model);
     const std::string title = fmt::format("{}: distances to {} ({})", args->scene,
                                           geometry::toString(goal), describe(model));
@@ -152,7 +150,7 @@ void addMoves(CLI::App& app, const Reporter& reporter) {
     }
     const world::Module* mobile = scene.world.moduleAt(at);
     const motion::Mobile where{at, mobile ? std::optional(mobile->id) : std::nullopt};
-    const MotionModel model = args->module.modelFor(scene, args->rules);
+    const MotionChoice model = args->module.modelFor(scene, args->rules);
     const bool toTerminal = (args->out.empty() || args->out == "-") && isatty(fileno(stdout));
     const bool asTable = args->format == "table" || (args->format == "auto" && toTerminal);
     if (model.kind == world::ModuleKind::kCatom3D) {
@@ -208,29 +206,21 @@ void addVerify(CLI::App& app) {
     const io::Scene scene = unwrap(io::readScene(args->scene));
     const world::ModuleKind kind = kindFor(args->module, scene);
     refuseOtherKindsOptions(*command, kind, {"--rules", "--attachment"});
-    if (kind == world::ModuleKind::kCatom3D) {
-      verifyRolls(scene.world, args->rolling);
-      return;
-    }
     const motion::RuleTable table;
-    size_t failures = 0;
-    for (const std::string& rules : args->rules) {
-      for (const std::string& attachment : args->attachment) {
-        const motion::RuleOptions options = parseRuleOptions(rules, attachment);
-        const auto report = motion::checkBidirectionality(scene.world, table, options);
-        fmt::print("{}: {} cells, {} motions, {} counterexamples\n",
-                   describe(MotionModel{world::ModuleKind::kDatom, options, {}}),
-                   report.cellsChecked, report.motionsChecked, report.counterexamples.size());
-        for (const auto& counterexample : report.counterexamples) {
-          const motion::Motion& m = counterexample.forward;
-          fmt::print("  {} -> {} (turn {} about pivot {} with piston {}) has no way back\n",
-                     geometry::toString(m.from), geometry::toString(m.goal),
-                     motion::toString(m.rule->turn), m.pivot.value, m.rule->up);
+    std::vector<std::unique_ptr<const motion::MotionModel>> models;
+    if (kind == world::ModuleKind::kCatom3D) {
+      for (const std::string& rolling : args->rolling) {
+        models.push_back(std::make_unique<catom3d::CatomRolls>(*catom3d::rollRulesNamed(rolling)));
+      }
+    } else {
+      for (const std::string& rules : args->rules) {
+        for (const std::string& attachment : args->attachment) {
+          models.push_back(
+              std::make_unique<motion::DatomRules>(table, parseRuleOptions(rules, attachment)));
         }
-        failures += report.counterexamples.size();
       }
     }
-    if (failures > 0) throw CheckFailed(fmt::format("{} counterexamples to theorem 2", failures));
+    verifyModels(scene.world, models);
   });
 }
 

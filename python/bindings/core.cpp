@@ -61,9 +61,9 @@ py::dict reach(const Scene& scene, const py::object& goal, const py::object& sta
                const std::string& rules, bool attachment, bool connectivity,
                const std::optional<std::string>& module, const std::string& rolling) {
   const Cell at = cellArgument(goal, "--goal");
-  const frontend::MotionModel model{kindOf(module, scene.scene().moduleKind),
-                                    ruleArguments(rules, attachment, connectivity).options(),
-                                    rollingOf(rolling)};
+  const frontend::MotionChoice model{kindOf(module, scene.scene().moduleKind),
+                                     ruleArguments(rules, attachment, connectivity).options(),
+                                     rollingOf(rolling)};
   const frontend::ReachOutput reached =
       frontend::reachOnScene(scene.scene(), at, optionalCell(start, "--start"), model);
   const auto sorted = reached.map.sorted();
@@ -94,9 +94,9 @@ std::string moves(const Scene& scene, const py::object& at, const std::string& r
   }
   const world::Module* mobile = world.moduleAt(cell);
   const motion::Mobile where{cell, mobile ? std::optional(mobile->id) : std::nullopt};
-  const frontend::MotionModel model{kindOf(module, scene.scene().moduleKind),
-                                    ruleArguments(rules, attachment, false).options(),
-                                    rollingOf(rolling)};
+  const frontend::MotionChoice model{kindOf(module, scene.scene().moduleKind),
+                                     ruleArguments(rules, attachment, false).options(),
+                                     rollingOf(rolling)};
   if (model.kind == world::ModuleKind::kCatom3D) {
     const catom3d::RollTable rolls;
     return frontend::rollsJson(cell, catom3d::evaluateAll(world, rolls, where, model.rolling),

@@ -9,32 +9,21 @@ namespace datomsim::api {
 
 namespace {
 
-// A motion's number: its rule's in the table of 72, or a 3D Catom's roll's in the table of 96 (a
-// world holds one kind of module, so the two never meet).
-int numberOf(const motion::Motion& motion) {
-  return motion.rule ? motion.rule->index : motion.roll;
-}
-
-Motion toPublic(const motion::Motion& motion) {
+// The public value of a motion, named in words by the model of the module's kind.
+Motion toPublic(const motion::Motion& motion, const program::ModuleContext& context) {
   Motion out;
   out.pivot = motion.pivot;
   out.pivotCell = motion.pivotCell;
   out.from = motion.from;
   out.goal = motion.goal;
-  out.rule = numberOf(motion);
-  if (!motion.rule) {
-    out.description =
-        fmt::format("roll {} about module {} at {} to {}", motion.roll, motion.pivot.value,
-                    toString(motion.pivotCell), toString(motion.goal));
-    return out;
-  }
+  out.rule = motion.rule;
   for (const motion::Deformation& deformation : motion.deformations) {
     out.helpers.push_back(
         {deformation.module, deformation.cell, deformation.firstAxis, deformation.secondAxis});
   }
   out.description =
-      fmt::format("turn {} about module {} at {} to {}", motion::toString(motion.rule->turn),
-                  motion.pivot.value, toString(motion.pivotCell), toString(motion.goal));
+      fmt::format("{} about module {} at {} to {}", context.motionName(motion), motion.pivot.value,
+                  toString(motion.pivotCell), toString(motion.goal));
   if (!out.helpers.empty()) out.description += fmt::format(" ({} helpers)", out.helpers.size());
   return out;
 }
@@ -88,7 +77,7 @@ class ContextAdapter final : public Context {
     std::vector<Motion> out;
     for (const motion::Evaluation& evaluation : context_.motions()) {
       if (const auto* motion = std::get_if<motion::Motion>(&evaluation)) {
-        out.push_back(toPublic(*motion));
+        out.push_back(toPublic(*motion, context_));
       }
     }
     return out;
@@ -117,11 +106,11 @@ MoveResult ContextAdapter::move(const Motion& wanted) {
                   wanted.rule, wanted.pivot.value, toString(context_.cell()));
   for (const motion::Evaluation& evaluation : context_.motions()) {
     if (const auto* motion = std::get_if<motion::Motion>(&evaluation)) {
-      if (numberOf(*motion) == wanted.rule && motion->pivot == wanted.pivot) {
+      if (motion->rule == wanted.rule && motion->pivot == wanted.pivot) {
         return context_.move(*motion);
       }
     } else if (const auto& refused = std::get<motion::Refusal>(evaluation);
-               refused.rule->index == wanted.rule && refused.pivot == wanted.pivot) {
+               refused.rule == wanted.rule && refused.pivot == wanted.pivot) {
       refusal.reason = MoveRefusal::Reason::kRule;
       refusal.cell = refused.cell;
       refusal.module = refused.blocker;

@@ -154,9 +154,11 @@ std::optional<RollRefusal> firstRefusal(const world::World& world, const Roll& r
                                         const Mobile& mobile, RollRules rules) {
   const Cell pivotCell = mobile.cell - roll.mobileOffset;
   RollRefusal refusal;
-  refusal.roll = &roll;
+  refusal.roll = roll.index;
   refusal.pivot = world.moduleAt(pivotCell)->id;
   const Cell goal = pivotCell + roll.goalOffset;
+  refusal.pivotCell = pivotCell;
+  refusal.goal = goal;
   if (!world.isInside(goal)) {
     refusal.cell = goal;
     refusal.reason = RollRefusalReason::kGoalOutsideWorld;
@@ -251,12 +253,10 @@ std::optional<std::pair<ModuleId, ModuleId>> oppositeModulesAround(const world::
 }
 
 std::string describe(const RollRefusal& refusal, const Cell& from) {
-  const Roll& roll = *refusal.roll;
-  const Cell pivotCell = from - roll.mobileOffset;
   const std::string head = fmt::format(
       "roll from {} to {} about pivot {} at {} through the {} face: ", geometry::toString(from),
-      geometry::toString(pivotCell + roll.goalOffset), refusal.pivot.value,
-      geometry::toString(pivotCell), toString(roll.face));
+      geometry::toString(refusal.goal), refusal.pivot.value, geometry::toString(refusal.pivotCell),
+      toString(faceOf(refusal.roll)));
   const std::string cell =
       fmt::format("cell {} ({})", geometry::toString(refusal.cell), toString(refusal.role));
   switch (refusal.reason) {
@@ -287,9 +287,13 @@ std::string describe(const RollRefusal& refusal, const Cell& from) {
 RollEvaluation evaluate(const world::World& world, const Roll& roll, const Mobile& mobile,
                         RollRules rules) {
   if (auto refusal = firstRefusal(world, roll, mobile, rules)) return std::move(*refusal);
-  const Cell pivotCell = mobile.cell - roll.mobileOffset;
-  return RollMotion{&roll, world.moduleAt(pivotCell)->id, pivotCell, mobile.cell,
-                    pivotCell + roll.goalOffset};
+  motion::Motion rolled;
+  rolled.rule = roll.index;
+  rolled.pivotCell = mobile.cell - roll.mobileOffset;
+  rolled.pivot = world.moduleAt(rolled.pivotCell)->id;
+  rolled.from = mobile.cell;
+  rolled.goal = rolled.pivotCell + roll.goalOffset;
+  return rolled;
 }
 
 bool holds(const world::World& world, const Roll& roll, const Mobile& mobile, RollRules rules) {
@@ -310,11 +314,11 @@ std::vector<RollEvaluation> evaluateAll(const world::World& world, const RollTab
   return out;
 }
 
-std::vector<RollMotion> validRolls(const world::World& world, const RollTable& table,
-                                   const Mobile& mobile, RollRules rules) {
-  std::vector<RollMotion> out;
+std::vector<motion::Motion> validRolls(const world::World& world, const RollTable& table,
+                                       const Mobile& mobile, RollRules rules) {
+  std::vector<motion::Motion> out;
   for (RollEvaluation& evaluation : evaluateAll(world, table, mobile, rules)) {
-    if (auto* motion = std::get_if<RollMotion>(&evaluation)) out.push_back(*motion);
+    if (auto* motion = std::get_if<motion::Motion>(&evaluation)) out.push_back(std::move(*motion));
   }
   return out;
 }

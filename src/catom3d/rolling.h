@@ -99,15 +99,6 @@ class RollTable {
   std::array<Roll, kRollCount> rolls_{};
 };
 
-// A valid roll of a mobile about a pivot.
-struct RollMotion {
-  const Roll* roll = nullptr;
-  ModuleId pivot;
-  geometry::Cell pivotCell;
-  geometry::Cell from;
-  geometry::Cell goal;
-};
-
 enum class RollRefusalReason : uint8_t {
   kGoalOccupied,
   kGoalOutsideWorld,
@@ -121,8 +112,10 @@ enum class RollRefusalReason : uint8_t {
 std::string_view toString(RollRefusalReason reason);
 
 struct RollRefusal {
-  const Roll* roll = nullptr;
+  int roll = -1;  // the roll's index in RollTable
   ModuleId pivot;
+  geometry::Cell pivotCell;
+  geometry::Cell goal;  // where the roll would have taken the mobile
   CellRole role = CellRole::kGoal;
   geometry::Cell cell;  // the cell at fault (for a lock: the goal or the start)
   RollRefusalReason reason = RollRefusalReason::kGoalOccupied;
@@ -134,7 +127,8 @@ struct RollRefusal {
 // (swept) holds module 30".
 std::string describe(const RollRefusal& refusal, const geometry::Cell& from);
 
-using RollEvaluation = std::variant<RollMotion, RollRefusal>;
+// A valid roll is a motion::Motion naming the roll by its index in RollTable (no deformation).
+using RollEvaluation = std::variant<motion::Motion, RollRefusal>;
 
 // The same Mobile as the Datom's rules (motion/motion.h): imagined at an empty cell, or the real
 // module there, or a module imagined elsewhere (its own cell then counts as empty).
@@ -153,8 +147,8 @@ std::vector<RollEvaluation> evaluateAll(const world::World& world, const RollTab
                                         const Mobile& mobile, RollRules rules);
 
 // The valid rolls only.
-std::vector<RollMotion> validRolls(const world::World& world, const RollTable& table,
-                                   const Mobile& mobile, RollRules rules);
+std::vector<motion::Motion> validRolls(const world::World& world, const RollTable& table,
+                                       const Mobile& mobile, RollRules rules);
 
 // The two opposite fixed modules `cell` lies between, if any (the first pair in direction order).
 std::optional<std::pair<ModuleId, ModuleId>> oppositeModulesAround(const world::World& world,

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <optional>
 
+#include "catom3d/catom_rolls.h"
 #include "frontend/usage_error.h"
 #include "geometry/cell_text.h"
 #include "world/bounds.h"
@@ -45,12 +46,14 @@ motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string
   return options;
 }
 
-std::string describe(const MotionModel& model) {
-  if (model.kind == world::ModuleKind::kCatom3D) {
-    return fmt::format("catom3d, {} rolls", catom3d::toString(model.rolling));
-  }
-  return fmt::format("rules {}, attachment {}", motion::toString(model.datom.rules),
-                     model.datom.attachment ? "on" : "off");
+std::unique_ptr<const motion::MotionModel> modelOf(const MotionChoice& choice,
+                                                   const motion::RuleTable& table) {
+  return catom3d::motionModelFor(choice.kind, table, choice.datom, choice.rolling);
+}
+
+std::string describe(const MotionChoice& choice) {
+  const motion::RuleTable table;
+  return modelOf(choice, table)->describe();
 }
 
 }  // namespace datomsim::frontend

@@ -3,11 +3,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "catom3d/rolling.h"
 #include "geometry/cell.h"
 #include "motion/motion.h"
+#include "motion/motion_model.h"
+#include "motion/rule_table.h"
 #include "world/module_kind.h"
 
 namespace datomsim::frontend {
@@ -31,16 +34,20 @@ struct RuleArguments {
   motion::RuleOptions options() const { return parseRuleOptions(rules, attachment, connectivity); }
 };
 
-// Which module's motions a command applies, and their options: the Datom's rules, or the 3D
-// Catom's rolls (docs/catom3d.md).
-struct MotionModel {
+// Which module's motions a command applies, and their options, as given: the Datom's rules, or
+// the 3D Catom's rolls (docs/catom3d.md). The motion model they choose is modelOf's.
+struct MotionChoice {
   world::ModuleKind kind = world::ModuleKind::kDatom;
   motion::RuleOptions datom;
   catom3d::RollRules rolling = catom3d::RollRules::kSymmetric;
 };
 
-// "datom, rules paper, attachment on" or "catom3d, symmetric rolls": what pictures and
-// reports name.
-std::string describe(const MotionModel& model);
+// The motion model the options choose (motion/motion_model.h); `table` must outlive it.
+std::unique_ptr<const motion::MotionModel> modelOf(const MotionChoice& choice,
+                                                   const motion::RuleTable& table);
+
+// "rules paper, attachment on" or "catom3d, symmetric rolls": what pictures and reports name
+// (the model's describe()).
+std::string describe(const MotionChoice& choice);
 
 }  // namespace datomsim::frontend

@@ -26,7 +26,7 @@ std::string_view onOff(bool on) {
 }  // namespace
 
 Status writeReachJson(const motion::DistanceMap& map, const std::vector<Cell>& path,
-                      const MotionModel& model, std::FILE* file) {
+                      const MotionChoice& model, std::FILE* file) {
   FileEmitter emitter{file};
   JsonObjectStream out(emitter.emit());
   out.field("goal", cellJson(map.goal()));
@@ -49,10 +49,9 @@ std::string movesJson(const Cell& at, const std::vector<motion::Evaluation>& mov
   for (const motion::Evaluation& evaluation : moves) {
     nlohmann::ordered_json entry;
     if (const auto* motion = std::get_if<motion::Motion>(&evaluation)) {
-      const motion::Rule& rule = *motion->rule;
       entry["pivot"] = cellJson(motion->pivotCell);
-      entry["piston"] = rule.up;
-      entry["turn"] = motion::toString(rule.turn);
+      entry["piston"] = motion::pistonOfRule(motion->rule);
+      entry["turn"] = motion::toString(motion::turnOfRule(motion->rule));
       entry["goal"] = cellJson(motion->goal);
       entry["valid"] = true;
       entry["refusal"] = nullptr;
@@ -65,12 +64,10 @@ std::string movesJson(const Cell& at, const std::vector<motion::Evaluation>& mov
       entry["deformations"] = deformations;
     } else {
       const auto& refusal = std::get<motion::Refusal>(evaluation);
-      const motion::Rule& rule = *refusal.rule;
-      const Cell pivotCell = at - rule.mobileOffset;
-      entry["pivot"] = cellJson(pivotCell);
-      entry["piston"] = rule.up;
-      entry["turn"] = motion::toString(rule.turn);
-      entry["goal"] = cellJson(pivotCell + rule.goalOffset);
+      entry["pivot"] = cellJson(refusal.pivotCell);
+      entry["piston"] = motion::pistonOfRule(refusal.rule);
+      entry["turn"] = motion::toString(motion::turnOfRule(refusal.rule));
+      entry["goal"] = cellJson(refusal.goal);
       entry["valid"] = false;
       entry["refusal"] = motion::describe(refusal);
       entry["deformations"] = nlohmann::ordered_json::array();
@@ -93,18 +90,16 @@ std::string movesTable(const Cell& at, const std::vector<motion::Evaluation>& mo
                                geometry::toString(d.cell), d.firstAxis);
         if (d.secondAxis >= 0) helpers += fmt::format(" then {}", d.secondAxis);
       }
-      valid +=
-          fmt::format("  {:<11} {:>6}  {:<5}  {:<11} {}\n", geometry::toString(motion->pivotCell),
-                      motion->rule->up, motion::toString(motion->rule->turn),
-                      geometry::toString(motion->goal), helpers.empty() ? "no helper" : helpers);
+      valid += fmt::format(
+          "  {:<11} {:>6}  {:<5}  {:<11} {}\n", geometry::toString(motion->pivotCell),
+          motion::pistonOfRule(motion->rule), motion::toString(motion::turnOfRule(motion->rule)),
+          geometry::toString(motion->goal), helpers.empty() ? "no helper" : helpers);
     } else {
       const auto& refusal = std::get<motion::Refusal>(evaluation);
-      const motion::Rule& rule = *refusal.rule;
-      const Cell pivotCell = at - rule.mobileOffset;
-      refused +=
-          fmt::format("  {:<11} {:>6}  {:<5}  {:<11} {}\n", geometry::toString(pivotCell), rule.up,
-                      motion::toString(rule.turn), geometry::toString(pivotCell + rule.goalOffset),
-                      motion::describe(refusal));
+      refused += fmt::format(
+          "  {:<11} {:>6}  {:<5}  {:<11} {}\n", geometry::toString(refusal.pivotCell),
+          motion::pistonOfRule(refusal.rule), motion::toString(motion::turnOfRule(refusal.rule)),
+          geometry::toString(refusal.goal), motion::describe(refusal));
     }
   }
   const std::string header =
@@ -129,12 +124,11 @@ struct RollLine {
 std::vector<RollLine> rollLines(const Cell& at, const std::vector<catom3d::RollEvaluation>& rolls) {
   std::vector<RollLine> lines;
   for (const catom3d::RollEvaluation& evaluation : rolls) {
-    if (const auto* roll = std::get_if<catom3d::RollMotion>(&evaluation)) {
-      lines.push_back({roll->pivotCell, roll->goal, roll->roll->face, {}});
+    if (const auto* roll = std::get_if<motion::Motion>(&evaluation)) {
+      lines.push_back({roll->pivotCell, roll->goal, catom3d::faceOf(roll->rule), {}});
     } else {
       const auto& refusal = std::get<catom3d::RollRefusal>(evaluation);
-      const Cell pivot = at - refusal.roll->mobileOffset;
-      lines.push_back({pivot, pivot + refusal.roll->goalOffset, refusal.roll->face,
+      lines.push_back({refusal.pivotCell, refusal.goal, catom3d::faceOf(refusal.roll),
                        catom3d::describe(refusal, at)});
     }
   }
@@ -144,7 +138,7 @@ std::vector<RollLine> rollLines(const Cell& at, const std::vector<catom3d::RollE
 }  // namespace
 
 std::string rollsJson(const Cell& at, const std::vector<catom3d::RollEvaluation>& rolls,
-                      const MotionModel& model) {
+                      const MotionChoice& model) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const RollLine& line : rollLines(at, rolls)) {
     nlohmann::ordered_json entry;
@@ -164,7 +158,7 @@ std::string rollsJson(const Cell& at, const std::vector<catom3d::RollEvaluation>
 }
 
 std::string rollsTable(const Cell& at, const std::vector<catom3d::RollEvaluation>& rolls,
-                       const MotionModel& model) {
+                       const MotionChoice& model) {
   std::string valid, refused;
   size_t validCount = 0;
   for (const RollLine& line : rollLines(at, rolls)) {

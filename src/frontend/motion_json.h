@@ -23,7 +23,7 @@ namespace datomsim::frontend {
 
 // Streams the reach document to an open file; the error says what could not be written.
 Status writeReachJson(const motion::DistanceMap& map, const std::vector<geometry::Cell>& path,
-                      const MotionModel& model, std::FILE* file);
+                      const MotionChoice& model, std::FILE* file);
 
 std::string movesJson(const geometry::Cell& at, const std::vector<motion::Evaluation>& moves);
 
@@ -32,8 +32,8 @@ std::string movesTable(const geometry::Cell& at, const std::vector<motion::Evalu
 
 // The same two for a 3D Catom's rolls.
 std::string rollsJson(const geometry::Cell& at, const std::vector<catom3d::RollEvaluation>& rolls,
-                      const MotionModel& model);
+                      const MotionChoice& model);
 std::string rollsTable(const geometry::Cell& at, const std::vector<catom3d::RollEvaluation>& rolls,
-                       const MotionModel& model);
+                       const MotionChoice& model);
 
 }  // namespace datomsim::frontend

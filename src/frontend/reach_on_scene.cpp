@@ -4,7 +4,6 @@
 
 #include <utility>
 
-#include "catom3d/rolling_reach.h"
 #include "experiment/run.h"
 #include "frontend/usage_error.h"
 #include "geometry/lattice.h"
@@ -16,11 +15,11 @@ ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
                          const std::optional<geometry::Cell>& start,
                          const motion::RuleOptions& options) {
   const world::ModuleKind kind = scene.moduleKind;
-  return reachOnScene(std::move(scene), goal, start, MotionModel{kind, options, {}});
+  return reachOnScene(std::move(scene), goal, start, MotionChoice{kind, options, {}});
 }
 
 ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
-                         const std::optional<geometry::Cell>& start, const MotionModel& model) {
+                         const std::optional<geometry::Cell>& start, const MotionChoice& model) {
   // The mobile, chosen as `run` chooses it, is not part of the fixed world.
   const experiment::MobileChoice mobile =
       unwrap(experiment::chooseMobile(scene.world, goal, start));
@@ -36,26 +35,13 @@ ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
                     "must be next to a module of the scene)",
                     geometry::toString(goal)));
   }
-  std::vector<geometry::Cell> path;
-  if (model.kind == world::ModuleKind::kCatom3D) {
-    const catom3d::RollTable table;
-    motion::DistanceMap map = unwrap(catom3d::reach(scene.world, table, goal, model.rolling));
-    if (start) {
-      path.push_back(*start);
-      for (const catom3d::RollMotion& m :
-           unwrap(catom3d::followGradient(scene.world, table, map, *start, model.rolling))) {
-        path.push_back(m.goal);
-      }
-    }
-    return {std::move(scene.world), mobile.module.has_value(), std::move(map), std::move(path)};
-  }
-  const motion::RuleOptions& options = model.datom;
   const motion::RuleTable table;
-  motion::DistanceMap map = unwrap(motion::reach(scene.world, table, goal, options));
+  const auto motions = modelOf(model, table);
+  motion::DistanceMap map = unwrap(motions->reach(scene.world, goal));
+  std::vector<geometry::Cell> path;
   if (start) {
     path.push_back(*start);
-    for (const motion::Motion& m :
-         unwrap(motion::followGradient(scene.world, table, map, *start))) {
+    for (const motion::Motion& m : unwrap(motions->followGradient(scene.world, map, *start))) {
       path.push_back(m.goal);
     }
   }

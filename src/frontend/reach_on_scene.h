@@ -26,6 +26,6 @@ ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
                          const std::optional<geometry::Cell>& start,
                          const motion::RuleOptions& options);
 ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
-                         const std::optional<geometry::Cell>& start, const MotionModel& model);
+                         const std::optional<geometry::Cell>& start, const MotionChoice& model);
 
 }  // namespace datomsim::frontend

@@ -10,21 +10,13 @@
 #include <vector>
 
 #include "motion/motion.h"
+#include "motion/motion_model.h"
 #include "motion/rule_table.h"
 #include "world/world.h"
 
 namespace datomsim::motion {
 
-struct Counterexample {
-  Motion forward;  // a valid motion X -> Y with no valid motion Y -> X
-};
-
-struct BidirectionalityReport {
-  size_t cellsChecked = 0;
-  size_t motionsChecked = 0;
-  std::vector<Counterexample> counterexamples;
-};
-
+// The Datom's rules under `options`, as motion::DatomRules::checkBidirectionality.
 BidirectionalityReport checkBidirectionality(const world::World& world, const RuleTable& table,
                                              const RuleOptions& options);
 

@@ -1,7 +1,5 @@
 #include "motion/motion.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -18,86 +16,6 @@ using geometry::Cell;
 using world::CellState;
 using world::Module;
 using world::World;
-
-std::string_view toString(RuleSet rules) {
-  return rules == RuleSet::kPaper ? "paper" : "strict";
-}
-
-std::string_view toString(RefusalReason reason) {
-  switch (reason) {
-    case RefusalReason::kGoalOccupied:
-      return "goal occupied";
-    case RefusalReason::kGoalOutsideWorld:
-      return "goal outside the world";
-    case RefusalReason::kCellOccupied:
-      return "occupied";
-    case RefusalReason::kCellOutsideWorld:
-      return "solid";
-    case RefusalReason::kDoubleDeformation:
-      return "double deformation not allowed";
-    case RefusalReason::kWouldLetGo:
-      return "cannot deform without letting go";
-    case RefusalReason::kGroupWouldLetGo:
-      return "deforming modules would let go together";
-    case RefusalReason::kMobileNotLatched:
-      return "mobile not latched to pivot";
-    case RefusalReason::kWouldDisconnect:
-      return "would disconnect";
-  }
-  return "?";
-}
-
-std::string describeCutOff(std::span<const ModuleId> modules) {
-  constexpr size_t kNamed = 8;
-  std::string names;
-  for (size_t i = 0; i < std::min(modules.size(), kNamed); ++i) {
-    names += (i ? ", " : "") + std::to_string(modules[i].value);
-  }
-  if (modules.size() > kNamed) names += fmt::format(" and {} more", modules.size() - kNamed);
-  return fmt::format("{} {} would be cut off from the rest",
-                     modules.size() == 1 ? "module" : "modules", names);
-}
-
-std::string describe(const Refusal& refusal) {
-  const Rule& rule = *refusal.rule;
-  const std::string head = fmt::format(
-      "turn {} about pivot {} with piston {}: ", toString(rule.turn), refusal.pivot.value, rule.up);
-  const std::string cell =
-      fmt::format("cell {} {}", toString(refusal.role), geometry::toString(refusal.cell));
-  switch (refusal.reason) {
-    case RefusalReason::kGoalOccupied:
-      return head + fmt::format("the goal {} holds module {}", geometry::toString(refusal.cell),
-                                refusal.blocker.value);
-    case RefusalReason::kGoalOutsideWorld:
-      return head +
-             fmt::format("the goal {} is outside the world", geometry::toString(refusal.cell));
-    case RefusalReason::kCellOccupied:
-      return head + cell + fmt::format(" must be empty but holds module {}", refusal.blocker.value);
-    case RefusalReason::kCellOutsideWorld:
-      return head + cell + " is solid (outside the world): no module can make way there";
-    case RefusalReason::kDoubleDeformation:
-      return head + cell +
-             fmt::format(
-                 " holds module {}, which would have to deform twice; strict rules "
-                 "require that cell to be empty",
-                 refusal.blocker.value);
-    case RefusalReason::kWouldLetGo:
-    case RefusalReason::kGroupWouldLetGo:
-      return head + cell +
-             fmt::format(" holds module {}, which cannot compress piston {}: {}",
-                         refusal.blocker.value, refusal.axis,
-                         refusal.reason == RefusalReason::kWouldLetGo
-                             ? "it is latched only through connectors that piston moves and "
-                               "would let go"
-                             : "it would stay latched only to modules that deform in the same "
-                               "motion, and they would let go together");
-    case RefusalReason::kMobileNotLatched:
-      return head + "the mobile is not latched to the pivot";
-    case RefusalReason::kWouldDisconnect:
-      return head + "the ensemble would fall apart: " + describeCutOff(refusal.cutOff);
-  }
-  return head;
-}
 
 namespace {
 
@@ -240,7 +158,7 @@ bool check(const World& world, const Rule& rule, const Cell& pivotCell, const Mo
   auto refuse = [&](CellRole role, const Cell& cell, RefusalReason reason, const Module* blocker,
                     int axis = -1) {
     if (refusal) {
-      refusal->rule = &rule;
+      refusal->rule = rule.index;
       refusal->role = role;
       refusal->cell = cell;
       refusal->reason = reason;
@@ -349,9 +267,11 @@ Evaluation evaluate(const World& world, const Rule& rule, const Mobile& mobile,
   const Module* pivot = world.moduleAt(pivotCell);
   Refusal refusal;
   refusal.pivot = pivot->id;
+  refusal.pivotCell = pivotCell;
+  refusal.goal = pivotCell + rule.goalOffset;
   if (const Module* self = realMobile(world, mobile)) {
     if (!world.isLatched(*self, geometry::oppositeDirection(rule.mobileDirection))) {
-      refusal.rule = &rule;
+      refusal.rule = rule.index;
       refusal.cell = pivotCell;
       refusal.reason = RefusalReason::kMobileNotLatched;
       return refusal;
@@ -362,7 +282,7 @@ Evaluation evaluate(const World& world, const Rule& rule, const Mobile& mobile,
              compressions)) {
     return refusal;
   }
-  motion.rule = &rule;
+  motion.rule = rule.index;
   motion.pivot = pivot->id;
   motion.pivotCell = pivotCell;
   motion.from = mobile.cell;

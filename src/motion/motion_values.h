@@ -46,11 +46,11 @@ struct Deformation {
   CellRole role = CellRole::kC;
 };
 
-// A valid motion of a mobile around a pivot: a Datom's rule, or a 3D Catom's roll (rule null;
-// catom3d/rolling.h, which this layer does not interpret).
+// A valid motion of a mobile around a pivot. `rule` numbers it in the table of the motion model
+// that made it (motion/motion_model.h): a Datom's rule in RuleTable, a 3D Catom's roll in
+// catom3d::RollTable; a world holds one kind of module, so the two never meet.
 struct Motion {
-  const Rule* rule = nullptr;
-  int roll = -1;  // the roll's index in catom3d::RollTable, for a Catom
+  int rule = -1;
   ModuleId pivot;
   geometry::Cell pivotCell;
   geometry::Cell from;
@@ -74,8 +74,10 @@ enum class RefusalReason : uint8_t {
 std::string_view toString(RefusalReason reason);
 
 struct Refusal {
-  const Rule* rule = nullptr;
+  int rule = -1;  // the rule's index in RuleTable
   ModuleId pivot;
+  geometry::Cell pivotCell;
+  geometry::Cell goal;  // where the rule would have taken the mobile
   CellRole role = CellRole::kGoal;
   geometry::Cell cell;
   RefusalReason reason = RefusalReason::kGoalOccupied;

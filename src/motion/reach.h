@@ -26,16 +26,16 @@ class DistanceMap {
   const geometry::Cell& goal() const { return goal_; }
   const RuleOptions& options() const { return options_; }
 
-  // Records a cell the goal is reached from in `distance` motions. Cells come in breadth-first
-  // order, the goal first; a cell already recorded is refused. How another module's motions
-  // (catom3d/) make a map of the same kind, drawn and written the same way.
-  bool add(const geometry::Cell& cell, int distance) {
-    if (index_.find(cell) != world::Occupancy::kEmpty) return false;
+  // Records a cell not recorded yet, the goal reached from it in `distance` motions. Cells come
+  // in breadth-first order, the goal first (motion/model_search.h builds maps).
+  void addNew(const geometry::Cell& cell, int distance) {
     index_.insert(cell, static_cast<uint32_t>(cells_.size()));
     cells_.push_back({cell, distance});
     maxDistance_ = std::max(maxDistance_, distance);
-    return true;
   }
+  // Makes the index cover the cells one step around `modules` at once, instead of regrowing as
+  // the search spreads (a mobile is always next to a pivot).
+  void reserveAround(const world::Occupancy& modules) { index_.reserveAround(modules, 1, 0); }
   bool contains(const geometry::Cell& cell) const {
     return index_.find(cell) != world::Occupancy::kEmpty;
   }
@@ -59,8 +59,6 @@ class DistanceMap {
   }
 
  private:
-  friend Result<DistanceMap> reach(const world::World&, const RuleTable&, geometry::Cell,
-                                   const RuleOptions&);
   geometry::Cell goal_;
   RuleOptions options_;
   world::Occupancy index_;  // cell -> position in cells_, dense over the explored box
@@ -69,8 +67,8 @@ class DistanceMap {
   uint64_t ruleEvaluations_ = 0;
 };
 
-// The gradient from `goal` over the fixed world (which must not hold a module at the goal).
-// Refuses a goal that is occupied or outside the world.
+// The Datom's gradient from `goal` over the fixed world (which must not hold a module at the
+// goal), as motion::DatomRules::reach. Refuses a goal that is occupied or outside the world.
 Result<DistanceMap> reach(const world::World& fixedWorld, const RuleTable& table,
                           geometry::Cell goal, const RuleOptions& options);
 
@@ -78,11 +76,11 @@ Result<DistanceMap> reach(const world::World& fixedWorld, const RuleTable& table
 // at G to compute the gradient. Returns the removed module.
 std::optional<world::Module> takeMobile(world::World& world, const geometry::Cell& cell);
 
-// The path from `start` to the map's goal, following the gradient (paper, Algorithm 1): from each
-// cell, the valid motion whose destination has the smallest distance; ties go to the first rule
-// in table order (the mobile's direction from the pivot 0..11, then the two pistons of that
-// connector in increasing axis order,
-// then left, right, ahead). Refuses a start the map does not reach.
+// The path from `start` to the map's goal for a Datom under the map's options, following the
+// gradient (paper, Algorithm 1), as motion::DatomRules::followGradient: from each cell, the valid
+// motion whose destination has the smallest distance; ties go to the first rule in table order (the
+// mobile's direction from the pivot 0..11, then the two pistons of that connector in increasing
+// axis order, then left, right, ahead). Refuses a start the map does not reach.
 Result<std::vector<Motion>> followGradient(const world::World& fixedWorld, const RuleTable& table,
                                            const DistanceMap& distances, geometry::Cell start);
 

@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "geometry/cell.h"
+#include "geometry/lattice.h"
 
 namespace datomsim::motion {
 
@@ -111,5 +112,14 @@ class RuleTable {
   static constexpr int32_t kSide = 2 * kReach + 1;
   std::array<int8_t, kSide * kSide * kSide> bitByOffset_;
 };
+
+// What a rule's index says by itself, by the table's order (Rule::index): its turn, and U, the
+// pivot's driving piston. Values that name a rule by its index read these without the table.
+constexpr Turn turnOfRule(int index) {
+  return static_cast<Turn>(index % 3);
+}
+constexpr int pistonOfRule(int index) {
+  return geometry::axesOfDirection(index / RuleTable::kRulesPerNeighbour)[size_t(index / 3 % 2)];
+}
 
 }  // namespace datomsim::motion

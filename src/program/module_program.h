@@ -84,6 +84,9 @@ class ModuleContext {
   // Every rule for this module as the mobile, valid or refused (paper, Algorithm 1:
   // getAllValidRules).
   virtual std::vector<motion::Evaluation> motions() const = 0;
+  // A motion of this module's kind in words, as its motion model names it ("turn left",
+  // "roll 17").
+  virtual std::string motionName(const motion::Motion& motion) const = 0;
   // The goals of the rules that hold with this module as the pivot and the mobile imagined in a
   // neighbouring cell, judged from this module's neighbourhood (the distributed gradient's view),
   // without building the motions. Only rules whose goal lies in a `wanted` direction are judged

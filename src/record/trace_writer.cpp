@@ -7,7 +7,6 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
-#include "catom3d/rolling.h"
 #include "datom/linkage.h"
 #include "datom/parts.h"
 #include "geometry/lattice.h"
@@ -170,16 +169,8 @@ void TraceWriter::pistonMoving(Time, const sim::PistonMove& move) {
 }
 
 void TraceWriter::motionStarted(Time t, const sim::MotionStart& start) {
-  if (const motion::Rule* rule = start.plan->rule) {
-    note(t, fmt::format("module {} turns {} about pivot {} (piston {}) towards {}",
-                        start.mobile.value, motion::toString(rule->turn), start.pivot.value,
-                        rule->up, geometry::toString(start.plan->goal)));
-  } else {
-    note(t, fmt::format("module {} rolls about pivot {} through the {} face towards {}",
-                        start.mobile.value, start.pivot.value,
-                        catom3d::toString(catom3d::faceOf(start.plan->roll)),
-                        geometry::toString(start.plan->goal)));
-  }
+  note(t, fmt::format("module {} {} towards {}", start.mobile.value,
+                      start.model->narrate(*start.plan), geometry::toString(start.plan->goal)));
   // The motion as a whole, for timelines: who moves, about which pivot, which modules make way,
   // and when it ends.
   const geometry::Cell& goal = start.plan->goal;

@@ -1,16 +1,17 @@
+// The motion executor's requests, their judgement and their end; the kinds of motion in between
+// are quarter_turns.cpp (a Datom's) and roll.cpp (a 3D Catom's), the latches motion_latches.cpp.
 #include "sim/motion_executor.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <stdexcept>
 
+#include "catom3d/catom_rolls.h"
 #include "geometry/lattice.h"
 
 namespace datomsim::sim {
 
 using geometry::Cell;
-using geometry::Orientation;
 using world::Module;
 
 namespace {
@@ -22,111 +23,37 @@ MoveRefusal refusal(MoveRefusal::Reason reason, std::string text) {
   return refused;
 }
 
-// The rotation of the lattice's group taking world direction a to b and c to d (two pairs that
-// are not opposite fix it).
-Orientation rotationTaking(int a, int b, int c, int d) {
-  for (int code = 0; code < Orientation::kCount; ++code) {
-    const Orientation rotation = *Orientation::fromCode(code);
-    if (rotation.worldDirection(a) == b && rotation.worldDirection(c) == d) return rotation;
-  }
-  throw std::logic_error("no rotation of the lattice takes these directions there");
+}  // namespace
+
+namespace {
+
+// The simulator judges connectivity itself, with the motions in progress (cutOff); the rule's
+// own check sees the world at rest and would misread a hinge.
+motion::RuleOptions withoutConnectivity(motion::RuleOptions rules) {
+  rules.connectivity = false;
+  return rules;
 }
 
 }  // namespace
 
-bool ActiveMotion::hasDoubleDeformation() const {
-  return std::any_of(plan.deformations.begin(), plan.deformations.end(),
-                     [](const motion::Deformation& d) { return d.secondAxis >= 0; });
-}
-
-MotionExecutor::MotionExecutor(world::World& world, const motion::RuleOptions& rules,
-                               Mechanics& mechanics, EventQueue& agenda, const Announcer& announce,
-                               MotionTimes times, MotionLimits limits)
+MotionExecutor::MotionExecutor(world::World& world, const motion::RuleTable& table,
+                               const motion::RuleOptions& rules, Mechanics& mechanics,
+                               EventQueue& agenda, const Announcer& announce, MotionTimes times,
+                               MotionLimits limits)
     : world_(world),
-      rules_(rules),
+      table_(table),
+      model_(catom3d::motionModelFor(limits.moduleKind, table, withoutConnectivity(rules),
+                                     limits.rolling)),
       mechanics_(mechanics),
       agenda_(agenda),
       announce_(announce),
       times_(times),
       limits_(limits),
-      motionOf_() {
-  // The simulator judges connectivity itself, with the motions in progress (cutOff); the rule's
-  // own check sees the world at rest and would misread a hinge.
-  rules_.connectivity = false;
-}
+      motionOf_() {}
 
 bool MotionExecutor::isQueued(uint32_t index) const {
   return std::any_of(queue_.begin(), queue_.end(),
                      [&](const Queued& queued) { return queued.mobile == index; });
-}
-
-std::optional<MotionExecutor::HingeEnd> MotionExecutor::hingePartner(uint32_t index,
-                                                                     int ownConnector) const {
-  // Asked for every message: with no motion in flight, the answer needs no look at the module.
-  if (activeCount_ == 0 || motionOf_[index] < 0) return std::nullopt;
-  const ActiveMotion& active = motions_[motionOf_[index]];
-  if (active.mobile == index && ownConnector == active.mobileConnector()) {
-    return HingeEnd{active.pivot, active.pivotConnector()};
-  }
-  if (active.pivot == index && ownConnector == active.pivotConnector()) {
-    return HingeEnd{active.mobile, active.mobileConnector()};
-  }
-  return std::nullopt;
-}
-
-uint32_t MotionExecutor::latchedBehind(uint32_t index, int ownConnector) const {
-  if (const auto hinge = hingePartner(index, ownConnector)) return hinge->module;
-  const Module& module = world_.modules()[index];
-  const Module* other = world_.neighbour(module, module.orientation.worldDirection(ownConnector));
-  return other ? uint32_t(other - world_.modules().data()) : world::kNoModule;
-}
-
-std::vector<world::BrokenLatch> MotionExecutor::latchesMovedBy(uint32_t index,
-                                                               int worldAxis) const {
-  std::vector<world::BrokenLatch> broken;
-  const Module& module = world_.modules()[index];
-  for (const int direction : geometry::directionsOfAxis(worldAxis)) {
-    const int own = module.orientation.ownConnector(direction);
-    if (!(module.latches & (1u << own))) continue;
-    const uint32_t other = latchedBehind(index, own);
-    if (other == world::kNoModule) continue;
-    broken.push_back({index, own});
-    if (const auto hinge = hingePartner(index, own)) {
-      broken.push_back({other, hinge->connector});
-    } else {
-      broken.push_back({other, world_.modules()[other].orientation.ownConnector(
-                                   geometry::oppositeDirection(direction))});
-    }
-  }
-  return broken;
-}
-
-std::vector<uint32_t> MotionExecutor::cutOff(std::vector<world::BrokenLatch> broken) const {
-  // Double deformations of motions in progress still to switch will break their second
-  // piston's latches: count them as broken already, so that no instant is missed.
-  for (const ActiveMotion& active : motions_) {
-    if (!active.active || active.resumed) continue;
-    for (const motion::Deformation& d : active.plan.deformations) {
-      if (d.secondAxis < 0) continue;
-      const auto more = latchesMovedBy(*world_.indexOf(d.module), d.secondAxis);
-      broken.insert(broken.end(), more.begin(), more.end());
-    }
-  }
-  const std::span<const Module> modules = world_.modules();
-  return world::cutOffPiece(
-      broken, [&](uint32_t index, int connector) { return latchedBehind(index, connector); },
-      [&](uint32_t index) { return modules[index].latches; }, [](uint32_t) { return false; });
-}
-
-std::optional<MoveRefusal> MotionExecutor::splitBy(std::vector<world::BrokenLatch> broken) const {
-  const std::vector<uint32_t> cut = cutOff(std::move(broken));
-  if (cut.empty()) return std::nullopt;
-  MoveRefusal refused;
-  refused.reason = MoveRefusal::Reason::kWouldDisconnect;
-  for (const uint32_t i : cut) refused.cutOff.push_back(world_.modules()[i].id);
-  std::sort(refused.cutOff.begin(), refused.cutOff.end());
-  refused.text = "the ensemble would fall apart: " + motion::describeCutOff(refused.cutOff);
-  return refused;
 }
 
 MoveRefusal MotionExecutor::refuse(uint32_t mobileIndex, MoveRefusal refused) const {
@@ -137,7 +64,7 @@ MoveRefusal MotionExecutor::refuse(uint32_t mobileIndex, MoveRefusal refused) co
 
 MoveResult MotionExecutor::request(uint32_t index, const motion::Motion& request) {
   const Module& mobile = world_.modules()[index];
-  if (!request.rule && (request.roll < 0 || request.roll >= catom3d::RollTable::kRollCount)) {
+  if (request.rule < 0 || request.rule >= model_->ruleCount()) {
     return refuse(index, refusal(MoveRefusal::Reason::kInvalidRequest,
                                  "the motion names no rule and no roll"));
   }
@@ -204,10 +131,10 @@ std::variant<uint32_t, MoveRefusal> MotionExecutor::servingPivot(uint32_t index,
 }
 
 MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& request) {
-  if (!request.rule) return tryStartRoll(index, request);
   const Module& mobile = world_.modules()[index];
-  // The world may have changed since the motion was listed: judge the rule again now.
-  const Cell pivotCell = mobile.cell - request.rule->mobileOffset;
+  // The world may have changed since the motion was listed: judge its rule again now.
+  const Cell pivotCell =
+      mobile.cell - geometry::neighbourOffset(model_->mobileDirection(request.rule));
   auto serving = servingPivot(index, pivotCell);
   if (auto* refused = std::get_if<MoveRefusal>(&serving)) return MoveResult(std::move(*refused));
   const Module* pivot = &world_.modules()[std::get<uint32_t>(serving)];
@@ -224,16 +151,10 @@ MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& reques
           {d.module, world_.modules()[*helper].orientation.worldAxis(pistons.piston)});
     }
   }
-  const motion::Evaluation judged =
-      motion::evaluate(world_, *request.rule, {mobile.cell, mobile.id}, rules_, compressions);
-  if (const auto* ruleRefusal = std::get_if<motion::Refusal>(&judged)) {
-    MoveRefusal refused = refusal(MoveRefusal::Reason::kRule, motion::describe(*ruleRefusal));
-    refused.cell = ruleRefusal->cell;
-    refused.module = ruleRefusal->blocker;
-    return refuse(index, std::move(refused));
-  }
+  auto judged = model_->judge(world_, request.rule, {mobile.cell, mobile.id}, compressions);
+  if (auto* refused = std::get_if<MoveRefusal>(&judged)) return refuse(index, std::move(*refused));
   const motion::Motion& motion = std::get<motion::Motion>(judged);
-  Claim claim = claimOf(world_, motion, index);
+  Claim claim = claimOf(world_, *model_, motion, index);
   if (auto conflict = reservations_.conflict(world_, claim)) return refuse(index, *conflict);
   // Every module of the deformation list must already hold its first piston compressed.
   for (const motion::Deformation& d : motion.deformations) {
@@ -252,18 +173,17 @@ MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& reques
     }
   }
   if (limits_.connectivity) {
-    // The mobile lets go of all but its pivot, the pivot of what U moves but the hinge, and
-    // double deformations will let go of what their second piston moves.
-    const motion::Rule& rule = *motion.rule;
+    // The mobile lets go of all but its pivot, the pivot of what the model says (a Datom's of
+    // what U moves but the hinge), and double deformations will let go of what their second
+    // piston moves.
     std::vector<world::BrokenLatch> broken;
-    const int hinge = geometry::oppositeDirection(rule.mobileDirection);
+    const int hinge = geometry::oppositeDirection(model_->mobileDirection(motion.rule));
     for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
       if (direction == hinge) continue;
       world::addBrokenLatch(world_, mobile, direction, broken);
     }
-    for (const int direction : geometry::directionsOfAxis(rule.up)) {
-      if (direction != rule.mobileDirection)
-        world::addBrokenLatch(world_, *pivot, direction, broken);
+    for (const int direction : model_->pivotLetsGo(motion.rule)) {
+      world::addBrokenLatch(world_, *pivot, direction, broken);
     }
     for (const motion::Deformation& d : motion.deformations) {
       if (d.secondAxis < 0) continue;
@@ -272,175 +192,28 @@ MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& reques
     }
     if (auto split = splitBy(std::move(broken))) return refuse(index, std::move(*split));
   }
-  begin(index, motion, std::move(claim));
+  if (model_->rolls()) {
+    beginRoll(index, motion, std::move(claim));
+  } else {
+    begin(index, motion, std::move(claim));
+  }
   return MoveResult::started();
 }
 
-void MotionExecutor::begin(uint32_t index, const motion::Motion& motion, Claim claim) {
-  const uint32_t pivotIndex = claim.pivot;
+int MotionExecutor::occupySlot(ActiveMotion planned, Claim claim, Time until) {
   const int slot = freeSlot();
   ActiveMotion& active = motions_[slot];
-  active = plan(motion, index, pivotIndex);
-  const Time now = agenda_.now();
-  active.start = now;
-  active.until =
-      now + 2 * times_.quarterTurn + (active.hasDoubleDeformation() ? 2 * times_.deformation : 0);
+  active = std::move(planned);
+  active.start = agenda_.now();
+  active.until = until;
   active.claim = std::move(claim);
-  reservations_.reserve(active.claim, {slot, world_.modules()[index].id, active.until});
+  reservations_.reserve(active.claim, {slot, world_.modules()[active.mobile].id, active.until});
   // Made on the first motion: a run without motions keeps no slot per module.
   if (motionOf_.empty()) motionOf_.assign(world_.size(), -1);
-  motionOf_[index] = static_cast<int16_t>(slot);
-  motionOf_[pivotIndex] = static_cast<int16_t>(slot);
+  motionOf_[active.mobile] = static_cast<int16_t>(slot);
+  motionOf_[active.pivot] = static_cast<int16_t>(slot);
   ++activeCount_;
-  const motion::Rule& rule = *active.plan.rule;
-
-  // Step 2: the mobile lets go of everything but the pivot; the pivot of the connectors its
-  // piston U moves, but the hinge.
-  const Module& m = world_.modules()[index];
-  for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
-    if (direction == geometry::oppositeDirection(rule.mobileDirection)) continue;
-    if (world_.isLatched(m, direction)) mechanics_.setLatched(m, direction, false);
-  }
-  const Module& p = world_.modules()[pivotIndex];
-  for (const int direction : geometry::directionsOfAxis(rule.up)) {
-    if (direction != rule.mobileDirection && world_.isLatched(p, direction)) {
-      mechanics_.setLatched(p, direction, false);
-    }
-  }
-  // Pivot and mobile compress U and F while the mobile turns about -R.
-  announce_(&Observer::motionStarted, now, MotionStart{m.id, p.id, &active.plan, active.until});
-  mechanics_.drive(pivotIndex, p.orientation.ownPiston(rule.up), times_.quarterTurn);
-  mechanics_.drive(index, m.orientation.ownPiston(rule.front), times_.quarterTurn);
-  announce_(&Observer::turnStarted, now,
-            QuarterTurn{m.id, p.id, p.cell, rule.up, geometry::oppositeAxis(rule.front),
-                        geometry::oppositeAxis(rule.right), 90.0, times_.quarterTurn, true});
-  agenda_.schedule(now + times_.quarterTurn, EventKind::kMotionMiddle, index, slot);
-}
-
-MoveResult MotionExecutor::tryStartRoll(uint32_t index, const motion::Motion& request) {
-  const Module& mobile = world_.modules()[index];
-  const catom3d::Roll& roll = rolls_.all()[size_t(request.roll)];
-  const Cell pivotCell = mobile.cell - roll.mobileOffset;
-  auto serving = servingPivot(index, pivotCell);
-  if (auto* refused = std::get_if<MoveRefusal>(&serving)) return MoveResult(std::move(*refused));
-  // Judged again on the world as it is now, with the real mobile.
-  const catom3d::RollEvaluation judged =
-      catom3d::evaluate(world_, roll, {mobile.cell, mobile.id}, limits_.rolling);
-  if (const auto* rollRefusal = std::get_if<catom3d::RollRefusal>(&judged)) {
-    MoveRefusal refused =
-        refusal(MoveRefusal::Reason::kRule, catom3d::describe(*rollRefusal, mobile.cell));
-    refused.cell = rollRefusal->cell;
-    refused.module = rollRefusal->blocker;
-    return refuse(index, std::move(refused));
-  }
-  const catom3d::RollMotion& rolled = std::get<catom3d::RollMotion>(judged);
-  motion::Motion motion = request;
-  motion.pivot = rolled.pivot;
-  motion.pivotCell = rolled.pivotCell;
-  motion.goal = rolled.goal;
-  motion.deformations.clear();
-  // What the roll holds: its cells that are empty now (the goal first), its mobile and pivot.
-  Claim claim;
-  claim.mobile = index;
-  claim.pivot = std::get<uint32_t>(serving);
-  const int cellCount =
-      limits_.rolling == catom3d::RollRules::kSymmetric ? roll.cellCount : roll.ownCellCount;
-  for (int i = 0; i < cellCount; ++i) {
-    const Cell cell = pivotCell + roll.cells[size_t(i)].offset;
-    if (world_.isInside(cell) && !world_.moduleAt(cell)) claim.cells.push_back(cell);
-  }
-  if (auto conflict = reservations_.conflict(world_, claim)) return refuse(index, *conflict);
-  if (limits_.connectivity) {
-    // The mobile lets go of all but its pivot while it rolls.
-    std::vector<world::BrokenLatch> broken;
-    const int hinge = geometry::oppositeDirection(roll.mobileDirection);
-    for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
-      if (direction != hinge) world::addBrokenLatch(world_, mobile, direction, broken);
-    }
-    if (auto split = splitBy(std::move(broken))) return refuse(index, std::move(*split));
-  }
-  beginRoll(index, motion, std::move(claim));
-  return MoveResult::started();
-}
-
-void MotionExecutor::beginRoll(uint32_t index, const motion::Motion& motion, Claim claim) {
-  const catom3d::Roll& roll = rolls_.all()[size_t(motion.roll)];
-  const uint32_t pivotIndex = claim.pivot;
-  const Module& pivot = world_.modules()[pivotIndex];
-  const Module& mobile = world_.modules()[index];
-  const int slot = freeSlot();
-  ActiveMotion& active = motions_[slot];
-  active = ActiveMotion{};
-  active.active = true;
-  active.plan = motion;
-  active.mobile = index;
-  active.pivot = pivotIndex;
-  // The contact rolls from the pivot's connector facing the start to the one facing the goal, and
-  // on the mobile from its connector facing the pivot to the one that faced the goal (rolling
-  // without slipping mirrors the one path in the other).
-  active.pivotOld = pivot.orientation.ownConnector(roll.mobileDirection);
-  active.mobileOld =
-      mobile.orientation.ownConnector(geometry::oppositeDirection(roll.mobileDirection));
-  active.pivotNew = pivot.orientation.ownConnector(roll.goalDirection);
-  const int towardsGoal = *geometry::directionOfOffset(roll.goalOffset - roll.mobileOffset);
-  active.mobileNew = mobile.orientation.ownConnector(towardsGoal);
-  // The body turns by a third of a turn about the normal of the triangle pivot, start, goal (a
-  // rotation of the lattice's group): the start goes to the goal, the pivot to the start, so the
-  // connector that faced the goal faces the pivot and the one that faced the pivot faces back.
-  active.end = mobile.orientation.then(rotationTaking(
-      towardsGoal, geometry::oppositeDirection(roll.goalDirection),
-      geometry::oppositeDirection(roll.mobileDirection), geometry::oppositeDirection(towardsGoal)));
-  active.middle = active.end;
-  const Time now = agenda_.now();
-  active.start = now;
-  active.until = now + 2 * times_.quarterTurn;
-  active.claim = std::move(claim);
-  reservations_.reserve(active.claim, {slot, mobile.id, active.until});
-  if (motionOf_.empty()) motionOf_.assign(world_.size(), -1);
-  motionOf_[index] = static_cast<int16_t>(slot);
-  motionOf_[pivotIndex] = static_cast<int16_t>(slot);
-  ++activeCount_;
-  // The Catom lets go of everything but its pivot, and rolls.
-  for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
-    if (direction == geometry::oppositeDirection(roll.mobileDirection)) continue;
-    if (world_.isLatched(mobile, direction)) mechanics_.setLatched(mobile, direction, false);
-  }
-  announce_(&Observer::motionStarted, now,
-            MotionStart{mobile.id, pivot.id, &active.plan, active.until});
-  announce_(&Observer::rollStarted, now,
-            RollTurn{mobile.id, pivot.id, pivot.cell, motion.from, motion.goal, 120.0,
-                     active.until - now});
-  agenda_.schedule(active.until, EventKind::kMotionEnd, index, slot);
-}
-
-ActiveMotion MotionExecutor::plan(const motion::Motion& motion, uint32_t mobileIndex,
-                                  uint32_t pivotIndex) const {
-  // The geometry of the two quarter turns (docs/conventions.md, section 5): the first about -R
-  // through the hinge between pivot and mobile, the second about U x G through the hinge towards
-  // the goal.
-  const motion::Rule& rule = *motion.rule;
-  const Module& pivot = world_.modules()[pivotIndex];
-  const Module& mobile = world_.modules()[mobileIndex];
-  ActiveMotion active;
-  active.active = true;
-  active.plan = motion;
-  active.mobile = mobileIndex;
-  active.pivot = pivotIndex;
-  active.goalAxis = rule.turn == motion::Turn::kLeft    ? geometry::oppositeAxis(rule.right)
-                    : rule.turn == motion::Turn::kRight ? rule.right
-                                                        : rule.front;
-  const int towardsGoal = *geometry::directionOfOffset(rule.goalOffset);
-  active.pivotOld = pivot.orientation.ownConnector(rule.mobileDirection);
-  active.mobileOld =
-      mobile.orientation.ownConnector(geometry::oppositeDirection(rule.mobileDirection));
-  active.pivotNew = pivot.orientation.ownConnector(towardsGoal);
-  const int firstTurnAxis = geometry::oppositeAxis(rule.right);
-  const int secondTurnAxis = *geometry::crossAxes(rule.up, active.goalAxis);
-  active.middle = mobile.orientation.then(Orientation::quarterTurn(firstTurnAxis));
-  active.end = active.middle.then(Orientation::quarterTurn(secondTurnAxis));
-  active.mobileNew = active.middle.ownConnector(
-      *geometry::directionOfAxes(geometry::oppositeAxis(rule.up), active.goalAxis));
-  return active;
+  return slot;
 }
 
 int MotionExecutor::freeSlot() {
@@ -450,76 +223,19 @@ int MotionExecutor::freeSlot() {
   return slot;
 }
 
-void MotionExecutor::middle(int slot) {
-  ActiveMotion& active = motions_[slot];
-  const Module& pivot = world_.modules()[active.pivot];
-  const Module& mobile = world_.modules()[active.mobile];
-  const motion::Rule& rule = *active.plan.rule;
-  const Time now = agenda_.now();
-  announce_(
-      &Observer::turnEnded, now,
-      QuarterTurn{mobile.id, pivot.id, pivot.cell, rule.up, geometry::oppositeAxis(rule.front),
-                  geometry::oppositeAxis(rule.right), 90.0, times_.quarterTurn, true});
-  // Step 3: the pair towards the goal latches first, then the old pair lets go, so that the
-  // mobile holds the pivot at every instant.
-  mechanics_.setLatched({pivot.id, active.pivotNew, mobile.id, active.mobileNew}, true);
-  mechanics_.setLatched({pivot.id, active.pivotOld, mobile.id, active.mobileOld}, false);
-  active.switched = true;
-
-  // A module in a def(X, Y) cell releases X (one deformation time), then compresses Y (one more).
-  if (!active.hasDoubleDeformation()) {
-    agenda_.schedule(now, EventKind::kMotionResume, active.mobile, slot);
-    return;
-  }
-  for (const motion::Deformation& d : active.plan.deformations) {
-    if (d.secondAxis < 0) continue;
-    const uint32_t index = *world_.indexOf(d.module);
-    mechanics_.beginSwitch(index, world_.modules()[index].orientation.ownPiston(d.secondAxis));
-  }
-  agenda_.schedule(now + times_.deformation, EventKind::kMotionSwitch, active.mobile, slot);
-}
-
-void MotionExecutor::switchPistons(int slot) {
-  ActiveMotion& active = motions_[slot];
-  // X is back at rest: its connectors latch again where they can; Y starts to compress and its
-  // connectors let go.
-  for (const motion::Deformation& d : active.plan.deformations) {
-    if (d.secondAxis < 0) continue;
-    mechanics_.finishSwitch(*world_.indexOf(d.module), motionOf_);
-  }
-  agenda_.schedule(agenda_.now() + times_.deformation, EventKind::kMotionResume, active.mobile,
-                   slot);
-}
-
-void MotionExecutor::resume(int slot) {
-  ActiveMotion& active = motions_[slot];
-  active.resumed = true;
-  const Module& pivot = world_.modules()[active.pivot];
-  const Module& mobile = world_.modules()[active.mobile];
-  const motion::Rule& rule = *active.plan.rule;
-  // Step 4: the mirrored half, pistons back to rest while the mobile turns about U x G.
-  mechanics_.driveBack(active.pivot, times_.quarterTurn);
-  mechanics_.driveBack(active.mobile, times_.quarterTurn);
-  const Time now = agenda_.now();
-  announce_(
-      &Observer::turnStarted, now,
-      QuarterTurn{mobile.id, pivot.id, pivot.cell, rule.up, active.goalAxis,
-                  *geometry::crossAxes(rule.up, active.goalAxis), 90.0, times_.quarterTurn, false});
-  agenda_.schedule(now + times_.quarterTurn, EventKind::kMotionEnd, active.mobile, slot);
-}
-
 Result<MotionExecutor::Arrival> MotionExecutor::end(int slot) {
   ActiveMotion& active = motions_[slot];
   // A Datom's motion ends its second quarter turn; a Catom's roll is one step.
-  const motion::Rule* rule = active.plan.rule;
+  const bool rolled = model_->rolls();
   const ModuleId mobileId = world_.modules()[active.mobile].id;
   const Module& pivot = world_.modules()[active.pivot];
   const Time now = agenda_.now();
-  if (rule) {
-    announce_(&Observer::turnEnded, now,
-              QuarterTurn{mobileId, pivot.id, pivot.cell, rule->up, active.goalAxis,
-                          *geometry::crossAxes(rule->up, active.goalAxis), 90.0, times_.quarterTurn,
-                          false});
+  if (!rolled) {
+    const int up = table_.rule(active.plan.rule).up;
+    announce_(
+        &Observer::turnEnded, now,
+        QuarterTurn{mobileId, pivot.id, pivot.cell, up, active.goalAxis,
+                    *geometry::crossAxes(up, active.goalAxis), 90.0, times_.quarterTurn, false});
   }
   // The goal was held for this motion: free it, then take it.
   reservations_.release(active.claim, slot);
@@ -535,7 +251,7 @@ Result<MotionExecutor::Arrival> MotionExecutor::end(int slot) {
           geometry::oppositeDirection(towardsPivot)) {
     return Error{"the latched pair does not face across the lattice after the motion"};
   }
-  if (!rule) {
+  if (rolled) {
     // The rolled contact latches before the old one lets go: the Catom holds its pivot
     // throughout.
     mechanics_.setLatched({pivot.id, active.pivotNew, mobileId, active.mobileNew}, true);
@@ -547,7 +263,7 @@ Result<MotionExecutor::Arrival> MotionExecutor::end(int slot) {
   // Pivot and mobile are back at rest (a Catom has no piston to bring back); they latch to every
   // neighbour at rest.
   for (const uint32_t index : {active.pivot, active.mobile}) {
-    if (rule) mechanics_.rest(index);
+    if (!rolled) mechanics_.rest(index);
     motionOf_[index] = -1;
   }
   active.active = false;

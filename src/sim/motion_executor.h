@@ -5,7 +5,8 @@
 //   - request() judges a motion at once: the mobile must be at rest and free; beyond the run's
 //     limit on concurrent motions the request waits in a queue, in request order. Otherwise, and
 //     when a queued request's turn comes, the motion is judged on the world as it is now: its
-//     pivot at rest and free, its rule holding, nothing it needs held by a motion in progress
+//     pivot at rest and free, its rule holding (asked of the modules' motion model,
+//     motion/motion_model.h), nothing it needs held by a motion in progress
 //     (sim/reservations.h), every module of its deformation list compressed, and, with
 //     connectivity on, no module cut off from its piece at any instant of the motion. A refusal
 //     says why, naming the holder and until when. A started motion holds what it needs until it
@@ -20,6 +21,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -32,6 +34,8 @@
 #include "datomsim/result.h"
 #include "geometry/orientation.h"
 #include "motion/motion.h"
+#include "motion/motion_model.h"
+#include "motion/rule_table.h"
 #include "sim/event_queue.h"
 #include "sim/mechanics.h"
 #include "sim/observer.h"
@@ -71,15 +75,17 @@ struct MotionTimes {
 struct MotionLimits {
   int maxMotions = 0;         // motions in flight at once; 0: no limit
   bool connectivity = false;  // refuse what would cut modules off from their piece
-  // The 3D Catom's rule set, for rolls (motion::Motion::roll).
+  // The modules' kind, whose motion model judges the motions, and the 3D Catom's rule set.
+  world::ModuleKind moduleKind = world::ModuleKind::kDatom;
   catom3d::RollRules rolling = catom3d::RollRules::kSymmetric;
 };
 
 class MotionExecutor {
  public:
-  MotionExecutor(world::World& world, const motion::RuleOptions& rules, Mechanics& mechanics,
-                 EventQueue& agenda, const Announcer& announce, MotionTimes times,
-                 MotionLimits limits);
+  // The table must outlive the executor.
+  MotionExecutor(world::World& world, const motion::RuleTable& table,
+                 const motion::RuleOptions& rules, Mechanics& mechanics, EventQueue& agenda,
+                 const Announcer& announce, MotionTimes times, MotionLimits limits);
 
   // A program asks for a motion of its module (by index).
   MoveResult request(uint32_t mobileIndex, const motion::Motion& motion);
@@ -125,10 +131,13 @@ class MotionExecutor {
  private:
   // Judges a request on the world as it is now and starts it, or says why not.
   MoveResult tryStart(uint32_t mobileIndex, const motion::Motion& request);
+  // A Datom's motion: two quarter turns driven by pistons (quarter_turns.cpp).
   void begin(uint32_t mobileIndex, const motion::Motion& motion, Claim claim);
-  // A 3D Catom's roll: judged with the Catom's rules, held as its cells say, made in one step.
-  MoveResult tryStartRoll(uint32_t mobileIndex, const motion::Motion& request);
+  // A 3D Catom's roll, made in one step (roll.cpp).
   void beginRoll(uint32_t mobileIndex, const motion::Motion& motion, Claim claim);
+  // Puts a motion that starts now and ends at `until` in a free slot, its holds reserved, its
+  // mobile and pivot marked as in it; the slot.
+  int occupySlot(ActiveMotion planned, Claim claim, Time until);
   // The pivot of a request, when it may serve: at rest and held by no motion; else the refusal.
   std::variant<uint32_t, MoveRefusal> servingPivot(uint32_t mobileIndex,
                                                    const geometry::Cell& pivotCell);
@@ -140,7 +149,10 @@ class MotionExecutor {
   int freeSlot();
 
   world::World& world_;
-  motion::RuleOptions rules_;
+  const motion::RuleTable& table_;
+  // The modules' kind's model, connectivity off: the executor judges it itself, with the motions
+  // in progress (cutOff).
+  std::unique_ptr<const motion::MotionModel> model_;
   catom3d::RollTable rolls_;
   Mechanics& mechanics_;
   EventQueue& agenda_;

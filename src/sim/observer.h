@@ -18,6 +18,7 @@
 #include "datomsim/values.h"
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
+#include "motion/motion_model.h"
 #include "motion/motion_values.h"
 #include "sim/event_queue.h"
 #include "world/module.h"
@@ -45,12 +46,14 @@ struct PistonMove {
 };
 
 // A motion's mobile starts to move around its pivot; `plan` holds the rule, the cells and the
-// helpers (its deformation list); the motion ends at `until` and holds what it needs till then.
+// helpers (its deformation list), its rule numbered in `model`'s table, which tells it in words;
+// the motion ends at `until` and holds what it needs till then.
 struct MotionStart {
   ModuleId mobile;
   ModuleId pivot;
   const motion::Motion* plan = nullptr;
   Time until = 0;
+  const motion::MotionModel* model = nullptr;
 };
 
 // One quarter turn of a mobile about the hinge it shares with its pivot (docs/simulation.md). The

@@ -12,15 +12,12 @@ std::string untilText(Time until) {
   return fmt::format("until {:g} s", double(until) / kSecond);
 }
 
-Claim claimOf(const world::World& world, const motion::Motion& motion, uint32_t mobileIndex) {
+Claim claimOf(const world::World& world, const motion::MotionModel& model,
+              const motion::Motion& motion, uint32_t mobileIndex) {
   Claim claim;
   claim.mobile = mobileIndex;
   claim.pivot = *world.indexOf(motion.pivot);
-  const motion::Rule& rule = *motion.rule;
-  for (int i = 0; i < rule.cellCount; ++i) {
-    const geometry::Cell cell = motion.pivotCell + rule.cells[i].offset;
-    if (!world.moduleAt(cell)) claim.cells.push_back(cell);
-  }
+  claim.cells = model.cellsHeld(world, motion);
   for (const motion::Deformation& d : motion.deformations) {
     claim.helpers.push_back({*world.indexOf(d.module), d.firstAxis, d.secondAxis >= 0});
   }

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "datomsim/move_result.h"
+#include "motion/motion_model.h"
 #include "motion/motion_values.h"
 #include "world/world.h"
 
@@ -39,8 +40,9 @@ struct Claim {
   std::vector<Helper> helpers;
 };
 
-// The claim of a valid motion: its empty rule cells, its mobile, pivot and helpers.
-Claim claimOf(const world::World& world, const motion::Motion& motion, uint32_t mobileIndex);
+// The claim of a valid motion of `model`: the cells it holds, its mobile, pivot and helpers.
+Claim claimOf(const world::World& world, const motion::MotionModel& model,
+              const motion::Motion& motion, uint32_t mobileIndex);
 
 class Reservations {
  public:

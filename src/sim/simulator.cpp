@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "catom3d/catom_rolls.h"
 #include "geometry/lattice.h"
 #include "sim/invariants.h"
 
@@ -79,9 +80,10 @@ class Simulator::Context final : public program::ModuleContext {
   Status release() override { return simulator_.release(index_); }
   int compressedPiston() const override { return simulator_.mechanics_.pistons(index_).piston; }
   std::vector<motion::Evaluation> motions() const override {
-    if (simulator_.options_.moduleKind == world::ModuleKind::kCatom3D) return rolls();
-    return motion::evaluateAll(simulator_.world_, simulator_.table_, {module().cell, module().id},
-                               simulator_.options_.rules);
+    return simulator_.model_->programMotions(simulator_.world_, {module().cell, module().id});
+  }
+  std::string motionName(const motion::Motion& motion) const override {
+    return simulator_.model_->name(motion);
   }
   int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,
                    uint16_t wanted) const override;
@@ -102,28 +104,9 @@ class Simulator::Context final : public program::ModuleContext {
 
  private:
   const Module& module() const { return simulator_.world_.modules()[index_]; }
-  std::vector<motion::Evaluation> rolls() const;
   Simulator& simulator_;
   uint32_t index_;
 };
-
-// A 3D Catom's valid rolls, as motions naming their roll (a refused roll has no rule to name in
-// a motion::Refusal: programs see the valid ones; `moves --module catom3d` lists the others).
-std::vector<motion::Evaluation> Simulator::Context::rolls() const {
-  std::vector<motion::Evaluation> out;
-  for (const catom3d::RollMotion& roll :
-       catom3d::validRolls(simulator_.world_, simulator_.rolls_, {module().cell, module().id},
-                           simulator_.options_.rolling)) {
-    motion::Motion motion;
-    motion.roll = roll.roll->index;
-    motion.pivot = roll.pivot;
-    motion.pivotCell = roll.pivotCell;
-    motion.from = roll.from;
-    motion.goal = roll.goal;
-    out.push_back(std::move(motion));
-  }
-  return out;
-}
 
 // The rules this module would judge as the pivot of a mobile imagined at `mobileCell`.
 int Simulator::Context::goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,
@@ -134,54 +117,18 @@ int Simulator::Context::goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>
   if (!direction || world.cellState(mobileCell) == world::CellState::kSolid) return 0;
   const motion::Mobile mobile{mobileCell, simulator_.options_.mobile};
   if (motion::fixedModuleAt(world, mobileCell, mobile)) return 0;
-  int count = 0;
-  if (simulator_.options_.moduleKind == world::ModuleKind::kCatom3D) {
-    // A goal reached through either face counts once: 4 goals at most.
-    for (const catom3d::Roll& roll : simulator_.rolls_.rollsForMobileDirection(*direction)) {
-      if (!(wanted & (1u << roll.goalDirection))) continue;
-      const Cell goal = pivot.cell + roll.goalOffset;
-      if (std::find(goals.begin(), goals.begin() + count, goal) != goals.begin() + count) continue;
-      if (catom3d::holds(world, roll, mobile, simulator_.options_.rolling)) goals[count++] = goal;
-    }
-    return count;
-  }
-  // The cells the wanted rules keep empty are looked at first, once for all of them; then the
-  // other cells of the rules they leave standing; then each rule is judged on what was seen.
-  const motion::RuleTable& table = simulator_.table_;
-  const motion::Rule* rules = table.rulesForMobileDirection(*direction);
-  uint64_t keptEmpty = 0;
-  for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
-    if (wanted & (1u << rules[i].goalDirection)) keptEmpty |= rules[i].masks.mustBeEmpty;
-  }
-  if (!keptEmpty) return 0;
-  motion::Surroundings around = motion::surroundingsOf(world, table, pivot.cell, mobile);
-  motion::lookAt(world, table, around, keptEmpty);
-  uint64_t standing = 0;
-  for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
-    if ((wanted & (1u << rules[i].goalDirection)) && motion::mayHold(rules[i], around)) {
-      standing |= rules[i].masks.cells;
-    }
-  }
-  if (!standing) return 0;
-  motion::lookAt(world, table, around, standing);
-  for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
-    // A rule refused by the cells it keeps empty stays refused by them: holds() sees it.
-    if (!(wanted & (1u << rules[i].goalDirection))) continue;
-    if (motion::holds(world, rules[i], mobile, simulator_.options_.rules, around)) {
-      goals[count++] = pivot.cell + rules[i].goalOffset;
-    }
-  }
-  return count;
+  return simulator_.model_->goalsAsPivot(world, pivot.cell, mobile, wanted, goals);
 }
 
 Simulator::Simulator(world::World world, const motion::RuleTable& table, SimulationOptions options)
     : world_(std::move(world)),
       table_(table),
+      model_(catom3d::motionModelFor(options.moduleKind, table, options.rules, options.rolling)),
       options_(options),
       mechanics_(world_, agenda_, announce_, options.deformationTime),
-      motions_(world_, options.rules, mechanics_, agenda_, announce_,
+      motions_(world_, table, options.rules, mechanics_, agenda_, announce_,
                {options.quarterTurnTime, options.deformationTime},
-               {options.maxMotions, options.connectivity, options.rolling}),
+               {options.maxMotions, options.connectivity, options.moduleKind, options.rolling}),
       transport_(world_, motions_, agenda_, announce_,
                  {options.messageDelay, options.messageJitter}, options.seed) {
   announce_.subscribeToChanges(&statistics_);

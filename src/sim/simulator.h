@@ -23,6 +23,7 @@
 #include "datomsim/random.h"
 #include "datomsim/result.h"
 #include "motion/motion.h"
+#include "motion/motion_model.h"
 #include "motion/rule_table.h"
 #include "program/module_program.h"
 #include "sim/event_queue.h"
@@ -133,7 +134,7 @@ class Simulator {
 
   world::World world_;
   const motion::RuleTable& table_;
-  catom3d::RollTable rolls_;  // a 3D Catom's, when the modules are Catoms
+  std::unique_ptr<const motion::MotionModel> model_;  // the modules' kind's
   SimulationOptions options_;
   EventQueue agenda_;
   Announcer announce_;

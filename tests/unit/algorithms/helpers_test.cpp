@@ -41,6 +41,7 @@ class RecordingContext final : public program::ModuleContext {
   }
   int compressedPiston() const override { return -1; }
   std::vector<motion::Evaluation> motions() const override { return {}; }
+  std::string motionName(const motion::Motion&) const override { return {}; }
   int goalsAsPivot(const Cell&, std::array<Cell, 6>&, uint16_t) const override { return 0; }
   MoveResult move(const motion::Motion&) override { return MoveResult::started(); }
   void setTimer(Time delay, int tag) override { timers.push_back({delay, tag}); }

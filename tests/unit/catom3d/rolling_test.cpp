@@ -4,7 +4,7 @@
 
 #include <set>
 
-#include "catom3d/rolling_reach.h"
+#include "catom3d/catom_rolls.h"
 #include "geometry/lattice.h"
 #include "scene/random_scene.h"
 #include "support/world_builder.h"
@@ -94,7 +94,7 @@ TEST(Rolling, AloneWithItsPivotAMobileRollsToEachOfItsFourGoalsThroughBothFaces)
   const auto rolls = validRolls(world, table(), {kM, std::nullopt}, RollRules::kSymmetric);
   ASSERT_EQ(rolls.size(), 8u);
   std::set<Cell> goals;
-  for (const RollMotion& roll : rolls) goals.insert(roll.goal);
+  for (const motion::Motion& roll : rolls) goals.insert(roll.goal);
   EXPECT_EQ(goals, (std::set<Cell>{{3, 3, 4}, {3, 2, 4}, {4, 3, 2}, {4, 4, 2}}));
 }
 
@@ -110,13 +110,13 @@ TEST(Rolling, AModuleInTheTetrahedralHoleBlocksTheHexagonalRollOnly) {
   EXPECT_EQ(describe(refusal, kM),
             "roll from 4,3,3 to 3,3,4 about pivot 1 at 3,3,3 through the hexagonal face: cell "
             "3,2,4 (face) must be empty but holds module 2");
-  EXPECT_TRUE(std::holds_alternative<RollMotion>(judge(world, Face::kOctagonal)));
+  EXPECT_TRUE(std::holds_alternative<motion::Motion>(judge(world, Face::kOctagonal)));
 }
 
 TEST(Rolling, ACornerOfTheOctahedralHoleBlocksTheOctagonalRollOnly) {
   for (const Cell& corner : {kA, kB, kW}) {
     const world::World world = WorldBuilder().module(kP).module(corner).build();
-    EXPECT_TRUE(std::holds_alternative<RollMotion>(judge(world, Face::kHexagonal)))
+    EXPECT_TRUE(std::holds_alternative<motion::Motion>(judge(world, Face::kHexagonal)))
         << geometry::toString(corner);
     const auto octagonal = judge(world, Face::kOctagonal);
     ASSERT_TRUE(std::holds_alternative<RollRefusal>(octagonal)) << geometry::toString(corner);
@@ -159,8 +159,8 @@ TEST(Rolling, ACatomCannotRollIntoACellBetweenTwoOppositeModules) {
         << describe(refusal, kM);
   }
   // VisibleSim's engine locks the goal for octagonal rolls only.
-  EXPECT_TRUE(
-      std::holds_alternative<RollMotion>(judge(world, Face::kHexagonal, RollRules::kVisibleSim)));
+  EXPECT_TRUE(std::holds_alternative<motion::Motion>(
+      judge(world, Face::kHexagonal, RollRules::kVisibleSim)));
   EXPECT_EQ(std::get<RollRefusal>(judge(world, Face::kOctagonal, RollRules::kVisibleSim)).reason,
             RollRefusalReason::kGoalBetweenModules);
 }
@@ -171,8 +171,8 @@ TEST(Rolling, NorCanItRollOutOfOneWithTheSymmetricRules) {
   const auto symmetric = judge(world, Face::kHexagonal);
   ASSERT_TRUE(std::holds_alternative<RollRefusal>(symmetric));
   EXPECT_EQ(std::get<RollRefusal>(symmetric).reason, RollRefusalReason::kStartBetweenModules);
-  EXPECT_TRUE(
-      std::holds_alternative<RollMotion>(judge(world, Face::kHexagonal, RollRules::kVisibleSim)));
+  EXPECT_TRUE(std::holds_alternative<motion::Motion>(
+      judge(world, Face::kHexagonal, RollRules::kVisibleSim)));
 }
 
 TEST(Rolling, TheRealMobileMustBeLatchedToThePivot) {
@@ -205,13 +205,14 @@ TEST(Rolling, AGoalOrCellBelowTheGroundIsRefusedAsSolid) {
 // octagonal roll sweeps, the mobile rolls from M to D and has no roll back.
 TEST(RollBidirectionality, VisibleSimsRulesHaveAWayOutWithNoWayBack) {
   const world::World world = WorldBuilder().module(kP).module({3, 2, 5}).module({3, 4, 4}).build();
-  const auto visibleSim = checkBidirectionality(world, table(), RollRules::kVisibleSim);
+  const auto visibleSim = CatomRolls(RollRules::kVisibleSim).checkBidirectionality(world);
   bool found = false;
-  for (const RollCounterexample& c : visibleSim.counterexamples) {
+  for (const motion::Counterexample& c : visibleSim.counterexamples) {
     found |= c.forward.from == kM && c.forward.goal == kD;
   }
   EXPECT_TRUE(found) << visibleSim.counterexamples.size() << " counterexamples";
-  EXPECT_TRUE(checkBidirectionality(world, table(), RollRules::kSymmetric).counterexamples.empty());
+  EXPECT_TRUE(
+      CatomRolls(RollRules::kSymmetric).checkBidirectionality(world).counterexamples.empty());
 }
 
 // Theorem 2 for the symmetric rolls, as a property on random scenes.
@@ -224,13 +225,13 @@ TEST(RollBidirectionality, HoldsForTheSymmetricRulesOnRandomScenes) {
     if (seed % 2 == 0) options.gridSize = Cell{8, 8, 6};
     const auto world = scene::random(seed, 40, options);
     ASSERT_TRUE(world.ok()) << world.error();
-    const auto report = checkBidirectionality(*world, table(), RollRules::kSymmetric);
+    const auto report = CatomRolls(RollRules::kSymmetric).checkBidirectionality(*world);
     EXPECT_GT(report.motionsChecked, 0u) << "seed " << seed;
     EXPECT_TRUE(report.counterexamples.empty())
         << "seed " << seed << ": " << geometry::toString(report.counterexamples[0].forward.from)
         << " -> " << geometry::toString(report.counterexamples[0].forward.goal);
     visibleSimCounterexamples +=
-        checkBidirectionality(*world, table(), RollRules::kVisibleSim).counterexamples.size();
+        CatomRolls(RollRules::kVisibleSim).checkBidirectionality(*world).counterexamples.size();
   }
   // The same scenes find VisibleSim's asymmetry: the check can tell the two apart.
   EXPECT_GT(visibleSimCounterexamples, 0u);
@@ -239,19 +240,19 @@ TEST(RollBidirectionality, HoldsForTheSymmetricRulesOnRandomScenes) {
 TEST(RollReach, EveryCellOnTheMapHasARollOneStepCloser) {
   for (const RollRules rules : {RollRules::kSymmetric, RollRules::kVisibleSim}) {
     const world::World world = WorldBuilder().box({0, 0, 0}, {6, 6, 2}).build();
-    const auto map = reach(world, table(), {2, 2, 2}, rules);
+    const auto map = CatomRolls(rules).reach(world, {2, 2, 2});
     ASSERT_TRUE(map.ok()) << map.error();
     EXPECT_EQ(map->distanceAt({2, 2, 2}), 0);
     EXPECT_GT(map->size(), 10u);
     for (const auto& [cell, distance] : map->sorted()) {
       if (distance == 0) continue;
       bool closer = false;
-      for (const RollMotion& m : validRolls(world, table(), {cell, std::nullopt}, rules)) {
+      for (const motion::Motion& m : validRolls(world, table(), {cell, std::nullopt}, rules)) {
         closer |= map->distanceAt(m.goal) == distance - 1;
       }
       EXPECT_TRUE(closer) << geometry::toString(cell) << " at " << distance;
     }
-    const auto path = followGradient(world, table(), *map, {0, 0, 2}, rules);
+    const auto path = CatomRolls(rules).followGradient(world, *map, {0, 0, 2});
     ASSERT_TRUE(path.ok()) << path.error();
     EXPECT_EQ(int(path->size()), *map->distanceAt({0, 0, 2}));
     EXPECT_EQ(path->back().goal, Cell(2, 2, 2));
@@ -260,11 +261,11 @@ TEST(RollReach, EveryCellOnTheMapHasARollOneStepCloser) {
 
 TEST(RollReach, RefusesAnOccupiedGoalAndAStartOffTheMap) {
   const world::World world = WorldBuilder().box({0, 0, 0}, {3, 3, 1}).build();
-  EXPECT_NE(reach(world, table(), {1, 1, 0}, RollRules::kSymmetric).error().find("holds module"),
+  EXPECT_NE(CatomRolls(RollRules::kSymmetric).reach(world, {1, 1, 0}).error().find("holds module"),
             std::string::npos);
-  const auto map = reach(world, table(), {1, 1, 1}, RollRules::kSymmetric);
+  const auto map = CatomRolls(RollRules::kSymmetric).reach(world, {1, 1, 1});
   ASSERT_TRUE(map.ok());
-  const auto path = followGradient(world, table(), *map, {9, 9, 9}, RollRules::kSymmetric);
+  const auto path = CatomRolls(RollRules::kSymmetric).followGradient(world, *map, {9, 9, 9});
   ASSERT_FALSE(path.ok());
   EXPECT_NE(path.error().find("not on the distance map"), std::string::npos);
 }

@@ -125,9 +125,9 @@ TEST(Motion, AttachmentRefusesAModuleHeldOnlyThroughConnectorsItsPistonMoves) {
 Evaluation aheadAbout241(const world::World& world, const RuleOptions& options) {
   const Mobile mobile{Cell{1, 4, 1}, std::nullopt};
   for (Evaluation& evaluation : evaluateAll(world, table(), mobile, options)) {
-    const Rule* rule = std::holds_alternative<Motion>(evaluation)
-                           ? std::get<Motion>(evaluation).rule
-                           : std::get<Refusal>(evaluation).rule;
+    const Rule* rule = &table().rule(std::holds_alternative<Motion>(evaluation)
+                                         ? std::get<Motion>(evaluation).rule
+                                         : std::get<Refusal>(evaluation).rule);
     const Cell pivot = mobile.cell - rule->mobileOffset;
     if (pivot == Cell{2, 4, 1} && pivot + rule->goalOffset == Cell{2, 5, 1}) return evaluation;
   }

@@ -39,7 +39,7 @@ TEST(TraceWriter, RecordsAMotionAsTheSimulatorAnnouncesIt) {
   programs[2].start = [&](program::ModuleContext& c) {
     for (const motion::Evaluation& e : c.motions()) {
       const auto* m = std::get_if<motion::Motion>(&e);
-      if (m && m->rule == &rule) {
+      if (m && m->rule == rule.index) {
         ASSERT_TRUE(c.move(*m).ok());
       }
     }

@@ -294,7 +294,8 @@ struct Parts {
   MotionExecutor motions;
   Parts(world::World w, MotionLimits limits)
       : world(std::move(w)),
-        motions(world, {}, mechanics, agenda, announce, {kSecond, 500 * kMillisecond}, limits) {}
+        motions(world, table(), {}, mechanics, agenda, announce, {kSecond, 500 * kMillisecond},
+                limits) {}
 };
 
 TEST(Invariants, AHelperThatLetsGoWhileTheMobilePassesIsCaught) {
@@ -333,6 +334,26 @@ TEST(Invariants, ALatchBrokenThatSplitsTheEnsembleIsCaughtWithConnectivityOn) {
   const auto violation = findViolation(parts.world, parts.mechanics, parts.motions, {});
   ASSERT_TRUE(violation.has_value());
   EXPECT_EQ(*violation, "the ensemble fell apart: module 38 would be cut off from the rest");
+}
+
+// A motion names its rule by its index in the table of the modules' motion model: an index
+// outside it is no motion of theirs, whichever the kind.
+TEST(MotionRequests, ARuleOutsideTheModelsTableIsRefused) {
+  for (const auto& [kind, count] :
+       {std::pair{world::ModuleKind::kDatom, 72}, std::pair{world::ModuleKind::kCatom3D, 96}}) {
+    Parts parts(floorWith({{2, 2, 1}}), {0, false, kind});
+    const world::Module& mobile = *parts.world.moduleAt({2, 2, 1});
+    motion::Motion request;
+    request.from = mobile.cell;
+    for (const int rule : {-1, count}) {
+      request.rule = rule;
+      const MoveResult result = parts.motions.request(*parts.world.indexOf(mobile.id), request);
+      ASSERT_FALSE(result.ok());
+      EXPECT_EQ(result.refusal().reason, MoveRefusal::Reason::kInvalidRequest);
+      EXPECT_NE(result.refusal().text.find("names no rule"), std::string::npos)
+          << result.refusal().text;
+    }
+  }
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ TEST(MotionStart, IsJudgedAsBeforeItsHelpersDeformed) {
   const world::Module& mover = *world->find(ModuleId{32});
   std::optional<motion::Motion> chosen;
   for (motion::Motion& motion : motion::validMotions(*world, table, {mover.cell, mover.id}, {})) {
-    if (motion.rule->index == 24 && motion.pivot == ModuleId{20}) chosen = std::move(motion);
+    if (motion.rule == 24 && motion.pivot == ModuleId{20}) chosen = std::move(motion);
   }
   ASSERT_TRUE(chosen.has_value()) << "the scene generator changed: find another case";
   ASSERT_EQ(chosen->deformations.size(), 2u);

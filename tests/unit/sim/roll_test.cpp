@@ -36,7 +36,7 @@ const Cell kP{3, 3, 3}, kM{4, 3, 3}, kD{3, 3, 4};
 std::optional<MoveResult> rollTo(ModuleContext& c, const Cell& goal, catom3d::Face face) {
   for (const motion::Evaluation& e : c.motions()) {
     const auto* m = std::get_if<motion::Motion>(&e);
-    if (m && m->goal == goal && catom3d::faceOf(m->roll) == face) return c.move(*m);
+    if (m && m->goal == goal && catom3d::faceOf(m->rule) == face) return c.move(*m);
   }
   return std::nullopt;
 }
@@ -96,7 +96,7 @@ TEST(Roll, ARollIntoACellBetweenTwoOppositeModulesIsRefusedWithTheReason) {
   catom3d::RollTable rolls;
   for (const catom3d::Roll& roll :
        rolls.rollsForMobileDirection(*geometry::directionOfOffset(kM - kP))) {
-    if (kP + roll.goalOffset == kD) kept.roll = roll.index;
+    if (kP + roll.goalOffset == kD) kept.rule = roll.index;
   }
   kept.from = kM;
   kept.goal = kD;

@@ -190,7 +190,7 @@ TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
   programs[2].start = [&](ModuleContext& c) {
     for (const motion::Evaluation& e : c.motions()) {
       const auto* m = std::get_if<motion::Motion>(&e);
-      if (m && m->rule == &stage.rule) started = c.move(*m);
+      if (m && m->rule == stage.rule.index) started = c.move(*m);
     }
   };
   programs[2].moved = [&](ModuleContext&) { done = true; };
@@ -218,7 +218,7 @@ TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
   programs[2].start = [&](ModuleContext& c) {
     // A motion listed when the goal was free, asked for after the world changed.
     motion::Motion stale;
-    stale.rule = &stage.rule;
+    stale.rule = stage.rule.index;
     stale.from = c.cell();
     stale.goal = stage.pivot + stage.rule.goalOffset;
     started = c.move(stale);
@@ -258,7 +258,7 @@ TEST(Simulator, AMotionWhoseHelperHasNotCompressedIsRefused) {
   programs[2].start = [&](ModuleContext& c) {
     for (const motion::Evaluation& e : c.motions()) {
       const auto* m = std::get_if<motion::Motion>(&e);
-      if (m && m->rule == &stage.rule) started = c.move(*m);
+      if (m && m->rule == stage.rule.index) started = c.move(*m);
     }
   };
   Simulator simulator(stage.build(), table(), {});
@@ -285,7 +285,7 @@ TEST(Simulator, ReleasingAPistonAMotionNeedsIsRefusedNamingTheMotion) {
   programs[2].timer = [&](ModuleContext& c, int) {
     for (const motion::Evaluation& e : c.motions()) {
       const auto* m = std::get_if<motion::Motion>(&e);
-      if (m && m->rule == &stage.rule) {
+      if (m && m->rule == stage.rule.index) {
         ASSERT_TRUE(c.move(*m).ok());
       }
     }

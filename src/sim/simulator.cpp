@@ -7,6 +7,7 @@
 
 #include "geometry/lattice.h"
 #include "sim/invariants.h"
+#include "sim/simulator_context.h"
 
 namespace datomsim::sim {
 
@@ -41,139 +42,6 @@ std::string Violation::describe() const {
                      double(time) / kSecond, sequence, toString(kind), module.value, what);
 }
 
-// The window a program has on the simulation: every call goes through the part that owns what
-// it changes, with that part's checks.
-class Simulator::Context final : public program::ModuleContext {
- public:
-  Context(Simulator& simulator, uint32_t index) : simulator_(simulator), index_(index) {}
-
-  ModuleId id() const override { return module().id; }
-  uint32_t slot() const override { return index_; }
-  Cell cell() const override { return module().cell; }
-  Orientation orientation() const override { return module().orientation; }
-  Time now() const override { return simulator_.agenda_.now(); }
-  std::optional<bool> occupied(const Cell& cell) const override {
-    // Beyond two steps (a distance of 2 lattice spacings) a module senses nothing. In whole
-    // numbers: four times the squared length of the offset (dx + dz/2, dy + dz/2, dz/sqrt 2).
-    const Cell d = cell - module().cell;
-    const int64_t x = 2 * int64_t{d.x} + d.z, y = 2 * int64_t{d.y} + d.z, z = d.z;
-    if (x * x + y * y + 2 * z * z > 16) return std::nullopt;
-    return simulator_.world_.moduleAt(cell) != nullptr;
-  }
-  std::optional<uint16_t> occupiedAround(const Cell& cell) const override {
-    if (!geometry::directionOfOffset(cell - module().cell)) return std::nullopt;
-    return simulator_.world_.neighbourMask(cell);
-  }
-  uint16_t latchedConnectors() const override { return module().latches; }
-  Cell cellBehind(int ownConnector) const override {
-    return module().cell +
-           geometry::neighbourOffset(module().orientation.worldDirection(ownConnector));
-  }
-  Status send(int ownConnector, const Message& message) override {
-    return simulator_.transport_.send(index_, ownConnector, message);
-  }
-  int sendToAll(const Message& message, int exceptConnector) override {
-    return simulator_.transport_.sendToAll(index_, exceptConnector, message);
-  }
-  Status compress(int ownPiston) override { return simulator_.compress(index_, ownPiston); }
-  Status release() override { return simulator_.release(index_); }
-  int compressedPiston() const override { return simulator_.mechanics_.pistons(index_).piston; }
-  std::vector<motion::Evaluation> motions() const override {
-    if (simulator_.options_.moduleKind == world::ModuleKind::kCatom3D) return rolls();
-    return motion::evaluateAll(simulator_.world_, simulator_.table_, {module().cell, module().id},
-                               simulator_.options_.rules);
-  }
-  int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,
-                   uint16_t wanted) const override;
-  MoveResult move(const motion::Motion& motion) override {
-    return simulator_.motions_.request(index_, motion);
-  }
-  void setTimer(Time delay, int tag) override {
-    simulator_.agenda_.schedule(now() + std::max<Time>(0, delay), EventKind::kTimer, index_, tag);
-  }
-  Random& random() override { return simulator_.randomOf(index_); }
-  void setColor(Color color) override {
-    simulator_.world_.setColorAt(index_, color);
-    simulator_.announce_(&Observer::colorChanged, now(), id(), color);
-  }
-  void log(std::string_view text) override {
-    simulator_.announce_(&Observer::programLog, now(), id(), text);
-  }
-
- private:
-  const Module& module() const { return simulator_.world_.modules()[index_]; }
-  std::vector<motion::Evaluation> rolls() const;
-  Simulator& simulator_;
-  uint32_t index_;
-};
-
-// A 3D Catom's valid rolls, as motions naming their roll (a refused roll has no rule to name in
-// a motion::Refusal: programs see the valid ones; `moves --module catom3d` lists the others).
-std::vector<motion::Evaluation> Simulator::Context::rolls() const {
-  std::vector<motion::Evaluation> out;
-  for (const catom3d::RollMotion& roll :
-       catom3d::validRolls(simulator_.world_, simulator_.rolls_, {module().cell, module().id},
-                           simulator_.options_.rolling)) {
-    motion::Motion motion;
-    motion.roll = roll.roll->index;
-    motion.pivot = roll.pivot;
-    motion.pivotCell = roll.pivotCell;
-    motion.from = roll.from;
-    motion.goal = roll.goal;
-    out.push_back(std::move(motion));
-  }
-  return out;
-}
-
-// The rules this module would judge as the pivot of a mobile imagined at `mobileCell`.
-int Simulator::Context::goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,
-                                     uint16_t wanted) const {
-  const world::World& world = simulator_.world_;
-  const Module& pivot = module();
-  const auto direction = geometry::directionOfOffset(mobileCell - pivot.cell);
-  if (!direction || world.cellState(mobileCell) == world::CellState::kSolid) return 0;
-  const motion::Mobile mobile{mobileCell, simulator_.options_.mobile};
-  if (motion::fixedModuleAt(world, mobileCell, mobile)) return 0;
-  int count = 0;
-  if (simulator_.options_.moduleKind == world::ModuleKind::kCatom3D) {
-    // A goal reached through either face counts once: 4 goals at most.
-    for (const catom3d::Roll& roll : simulator_.rolls_.rollsForMobileDirection(*direction)) {
-      if (!(wanted & (1u << roll.goalDirection))) continue;
-      const Cell goal = pivot.cell + roll.goalOffset;
-      if (std::find(goals.begin(), goals.begin() + count, goal) != goals.begin() + count) continue;
-      if (catom3d::holds(world, roll, mobile, simulator_.options_.rolling)) goals[count++] = goal;
-    }
-    return count;
-  }
-  // The cells the wanted rules keep empty are looked at first, once for all of them; then the
-  // other cells of the rules they leave standing; then each rule is judged on what was seen.
-  const motion::RuleTable& table = simulator_.table_;
-  const motion::Rule* rules = table.rulesForMobileDirection(*direction);
-  uint64_t keptEmpty = 0;
-  for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
-    if (wanted & (1u << rules[i].goalDirection)) keptEmpty |= rules[i].masks.mustBeEmpty;
-  }
-  if (!keptEmpty) return 0;
-  motion::Surroundings around = motion::surroundingsOf(world, table, pivot.cell, mobile);
-  motion::lookAt(world, table, around, keptEmpty);
-  uint64_t standing = 0;
-  for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
-    if ((wanted & (1u << rules[i].goalDirection)) && motion::mayHold(rules[i], around)) {
-      standing |= rules[i].masks.cells;
-    }
-  }
-  if (!standing) return 0;
-  motion::lookAt(world, table, around, standing);
-  for (int i = 0; i < motion::RuleTable::kRulesPerNeighbour; ++i) {
-    // A rule refused by the cells it keeps empty stays refused by them: holds() sees it.
-    if (!(wanted & (1u << rules[i].goalDirection))) continue;
-    if (motion::holds(world, rules[i], mobile, simulator_.options_.rules, around)) {
-      goals[count++] = pivot.cell + rules[i].goalOffset;
-    }
-  }
-  return count;
-}
-
 Simulator::Simulator(world::World world, const motion::RuleTable& table, SimulationOptions options)
     : world_(std::move(world)),
       table_(table),
@@ -205,7 +73,7 @@ Simulator::~Simulator() = default;
 size_t Simulator::bytesPerModuleState() {
   // A program pointer (none when one program serves all), the pistons, the motion slot; the
   // random streams only once a program draws.
-  return sizeof(program::ModuleProgram*) + sizeof(Mechanics::Pistons) + sizeof(int16_t);
+  return sizeof(Program*) + sizeof(Mechanics::Pistons) + sizeof(int16_t);
 }
 
 uint32_t Simulator::indexOf(ModuleId id) const {
@@ -237,11 +105,11 @@ class OwnedPrograms final : public program::ProgramSource {
   OwnedPrograms(program::ProgramFactory factory, size_t moduleCount)
       : factory_(std::move(factory)), programs_(moduleCount) {}
   void make(ModuleId id, uint32_t slot) override { programs_[slot] = factory_(id); }
-  program::ModuleProgram* programAt(uint32_t slot) override { return programs_[slot].get(); }
+  Program* programAt(uint32_t slot) override { return programs_[slot].get(); }
 
  private:
   program::ProgramFactory factory_;
-  std::vector<std::unique_ptr<program::ModuleProgram>> programs_;
+  std::vector<std::unique_ptr<Program>> programs_;
 };
 
 }  // namespace
@@ -309,8 +177,8 @@ Status Simulator::run(Time until) {
 
 void Simulator::dispatch(const Event& event) {
   const uint32_t index = event.module;
-  Context context(*this, index);
-  program::ModuleProgram* program = programOf(index);
+  ProgramContext context(*this, index);
+  Program* program = programOf(index);
   switch (event.kind) {
     case EventKind::kStart:
       if (program) program->onStart(context);
@@ -341,12 +209,16 @@ void Simulator::dispatch(const Event& event) {
       const auto arrival = motions_.end(event.argument);
       if (!arrival.ok()) return fail(arrival.error());
       placed_.push_back(arrival->mobile);
-      Context mobile(*this, arrival->mobile);
-      if (auto* moved = programOf(arrival->mobile)) moved->onMotionDone(mobile);
+      ProgramContext mobile(*this, arrival->mobile);
+      if (auto* moved = programOf(arrival->mobile)) {
+        moved->onMotionEnded(mobile, {true, mobile.cell(), std::nullopt});
+      }
       // Queued requests whose turn came and that were refused: their programs hear of it.
       for (const auto& [waiting, refusal] : arrival->refused) {
-        Context refused(*this, waiting);
-        if (auto* queued = programOf(waiting)) queued->onMotionRefused(refused, refusal);
+        ProgramContext refused(*this, waiting);
+        if (auto* queued = programOf(waiting)) {
+          queued->onMotionEnded(refused, {false, refused.cell(), refusal});
+        }
       }
       break;
     }
@@ -361,10 +233,10 @@ void Simulator::tellLatchChanges() {
     for (const auto& [module, connector] :
          {std::pair{pair.a, pair.connectorA}, std::pair{pair.b, pair.connectorB}}) {
       const uint32_t index = indexOf(module);
-      program::ModuleProgram* program = programOf(index);
+      Program* program = programOf(index);
       if (!program) continue;
-      Context context(*this, index);
-      program->onLatchChanged(context, connector, latched);
+      ProgramContext context(*this, index);
+      program->onNeighbourChanged(context, connector, latched);
     }
   }
   latchChanges_.changes.clear();

@@ -133,6 +133,10 @@ class DATOMSIM_API Context {
   // The motions this module can make now as the mobile, judged on the world as it is (paper,
   // Algorithm 1: getAllValidRules), in rule order.
   virtual std::vector<Motion> motions() const = 0;
+  // The others: every rule refused for this module as the mobile, in rule order, each as a
+  // refusal (reason kRule) naming the cell and module at stake, its sentence naming the rule. A 3D
+  // Catom's refused rolls are not listed (`datomsim moves --module catom3d` lists them).
+  virtual std::vector<MoveRefusal> refusedMotions() const = 0;
   // A sentence for logs, e.g. "turn left about module 12 at 3,4,1 to 4,4,2 (1 helpers)"; built
   // only when asked, so that listing motions costs no text.
   virtual std::string describe(const Motion& motion) const = 0;

@@ -97,6 +97,25 @@ std::vector<Motion> Simulator::ProgramContext::motions() const {
   return out;
 }
 
+std::vector<MoveRefusal> Simulator::ProgramContext::refusedMotions() const {
+  std::vector<MoveRefusal> out;
+  if (simulator_.options_.moduleKind == world::ModuleKind::kCatom3D) return out;
+  for (const motion::Evaluation& evaluation :
+       motion::evaluateAll(simulator_.world_, simulator_.table_, {module().cell, module().id},
+                           simulator_.options_.rules)) {
+    if (const auto* refused = std::get_if<motion::Refusal>(&evaluation)) {
+      MoveRefusal refusal;
+      refusal.reason = MoveRefusal::Reason::kRule;
+      refusal.cell = refused->cell;
+      refusal.module = refused->blocker;
+      refusal.cutOff = refused->cutOff;
+      refusal.text = motion::describe(*refused);
+      out.push_back(std::move(refusal));
+    }
+  }
+  return out;
+}
+
 std::string Simulator::ProgramContext::describe(const Motion& motion) const {
   if (simulator_.options_.moduleKind == world::ModuleKind::kCatom3D) {
     return fmt::format("roll {} about module {} at {} to {}", motion.rule, motion.pivot.value,

@@ -39,6 +39,7 @@ class Simulator::ProgramContext final : public datomsim::Context {
   Status release() override { return simulator_.release(index_); }
   int compressedPiston() const override { return simulator_.mechanics_.pistons(index_).piston; }
   std::vector<Motion> motions() const override;
+  std::vector<MoveRefusal> refusedMotions() const override;
   std::string describe(const Motion& motion) const override;
   MoveResult move(const Motion& motion) override;
   int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,

@@ -46,6 +46,7 @@ class RecordingContext final : public Context {
   }
   int compressedPiston() const override { return -1; }
   std::vector<Motion> motions() const override { return {}; }
+  std::vector<MoveRefusal> refusedMotions() const override { return {}; }
   std::string describe(const Motion&) const override { return ""; }
   int goalsAsPivot(const Cell&, std::array<Cell, 6>&, uint16_t) const override { return 0; }
   MoveResult move(const Motion&) override { return MoveResult::started(); }

@@ -2,11 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "geometry/lattice.h"
 #include "support/scripted_program.h"
@@ -215,7 +217,9 @@ TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
   const Stage stage;
   std::map<uint32_t, Script> programs;
   std::optional<MoveResult> started;
+  std::vector<MoveRefusal> refused;
   programs[2].start = [&](Context& c) {
+    refused = c.refusedMotions();
     // A motion listed when the goal was free, asked for after the world changed.
     Motion stale;
     stale.rule = stage.rule.index;
@@ -237,6 +241,11 @@ TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
   EXPECT_EQ(started->refusal().reason, MoveRefusal::Reason::kRule);
   EXPECT_NE(started->error().find("the goal"), std::string::npos) << started->error();
   EXPECT_EQ(simulator.world().find(ModuleId{2})->cell, stage.mobile);
+  // The module could have known: its refused motions name the goal's module.
+  const Cell goal = stage.pivot + stage.rule.goalOffset;
+  EXPECT_TRUE(std::any_of(refused.begin(), refused.end(), [&](const MoveRefusal& r) {
+    return r.reason == MoveRefusal::Reason::kRule && r.cell == goal && r.module == ModuleId{3};
+  }));
 }
 
 // The go-ahead rule with a module in cell C (def(R)) held by a support behind it.

@@ -51,8 +51,8 @@ class [[nodiscard]] MoveResult {
   MoveResult(MoveRefusal refusal)  // NOLINT(google-explicit-constructor)
       : state_(State::kRefused), refusal_(std::move(refusal)) {}
 
-  // Started or queued: the program hears of the end through onMotionDone, or of a later refusal
-  // (a queued request judged again when its turn comes) through onMotionRefused.
+  // Started or queued: the program hears of the end, or of a later refusal (a queued request
+  // judged again when its turn comes), through Program::onMotionEnded.
   bool ok() const { return state_ != State::kRefused; }
   State state() const { return state_; }
   const MoveRefusal& refusal() const { return refusal_; }

@@ -2,14 +2,17 @@
 // controller of a real Datom would (VisibleSim calls it a BlockCode). docs/writing-programs.md is
 // the tutorial; docs/simulation.md gives the semantics of time, messages and motions.
 //
-// A program sees only its module's Context: its id, cell and orientation, which connectors are
-// latched, the cells within two lattice steps, the motions it could make, the time, its random
-// stream and its parameters. It acts by sending typed messages through latched connectors,
-// compressing or releasing its pistons, asking for motions, setting timers, colouring itself and
-// writing to the trace. Everything else it learns from messages. The simulator calls the hooks of
-// Program; a hook runs to its end before any other event happens (no threads, no locks).
+// A program sees only its module's Context: its id, slot, cell and orientation, which connectors
+// are latched, the cells within two lattice steps, the motions it could make (and, as a pivot, the
+// goals it could turn a mobile to), the time, its random stream and its parameters. It acts by
+// sending typed messages through latched connectors, compressing or releasing its pistons, asking
+// for motions, setting timers, colouring itself and writing to the trace. Everything else it learns
+// from messages. The simulator calls the hooks of Program; a hook runs to its end before any other
+// event happens (no threads, no locks). The built-in programs (gradient, follow-gradient, walkers,
+// reconfigure, flood) are written against this interface too.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -42,7 +45,9 @@ struct Helper {
 };
 
 // A motion this module can make now, as the mobile: a rotation about a latched neighbour, the
-// pivot, from the module's cell to `goal` (docs/motion-rules.md).
+// pivot, from the module's cell to `goal` (docs/motion-rules.md). Context::move takes it back by
+// its rule number, start cell and helpers; Context::describe makes its sentence for logs, on
+// demand (listing motions builds none).
 struct Motion {
   ModuleId pivot;
   Cell pivotCell;
@@ -50,9 +55,8 @@ struct Motion {
   Cell goal;
   std::vector<Helper> helpers;
   // The rule's number in the table of 72 (stable across runs; a 3D Catom's: its roll's in the
-  // table of 96, docs/catom3d.md), and a sentence for logs.
+  // table of 96, docs/catom3d.md).
   int rule = -1;
-  std::string description;
 };
 
 // How a motion this module asked for ended: arrived at the goal, or refused when its turn came in
@@ -68,15 +72,31 @@ class DATOMSIM_API Context {
   virtual ~Context() = default;
 
   virtual ModuleId id() const = 0;
+  // The module's place in the run, 0 to n-1 for n modules, fixed for the run: a program object
+  // that serves several modules keeps each one's state by it.
+  virtual uint32_t slot() const = 0;
   virtual Cell cell() const = 0;
   // One of the 24 orientations (docs/conventions.md): which world direction each own connector
-  // faces.
+  // faces. The conversions below answer in its terms; a number out of range throws
+  // std::out_of_range.
   virtual int orientation() const = 0;
+  // The own connector facing a world direction 0..11, and the world direction an own connector
+  // 0..11 faces.
+  virtual int ownConnector(int worldDirection) const = 0;
+  virtual int worldDirection(int connector) const = 0;
+  // The own piston along a world axis 0..5 (what a Helper's axis names), and the world axis an own
+  // piston 0..5 lies along.
+  virtual int pistonAlong(int worldAxis) const = 0;
+  virtual int worldAxis(int piston) const = 0;
   virtual Time now() const = 0;
 
   // Whether a cell holds a module, for cells within two lattice steps (what a module senses to
   // judge a motion); nullopt further away.
   virtual std::optional<bool> occupied(const Cell& cell) const = 0;
+  // The same for the twelve neighbours of a cell next to this module (all within two steps): bit
+  // d set when the neighbour in world direction d holds a module. Nullopt for a cell that is not
+  // next to this module.
+  virtual std::optional<uint16_t> occupiedAround(const Cell& cell) const = 0;
 
   // Connectors are numbered 0..11 in the module's own frame. Bit i set: connector i is latched.
   virtual uint16_t latchedConnectors() const = 0;
@@ -109,17 +129,35 @@ class DATOMSIM_API Context {
   virtual Status release() = 0;
   // The own piston compressed or moving, or -1.
   virtual int compressedPiston() const = 0;
-  // The own piston along a world axis 0..5 (what a Helper's axis names; another number throws
-  // std::out_of_range).
-  virtual int pistonAlong(int worldAxis) const = 0;
 
-  // The motions this module can make now as the mobile, judged on the world as it is.
+  // The motions this module can make now as the mobile, judged on the world as it is (paper,
+  // Algorithm 1: getAllValidRules), in rule order.
   virtual std::vector<Motion> motions() const = 0;
-  // Asks for one of them: it starts (onMotionEnded when it is over), waits in the run's queue, or
-  // is refused at once with the reason (a helper not ready, a cell reserved by another motion,
-  // the ensemble would fall apart...). A refusal is a value to act on: retry later, or choose
-  // another motion.
+  // The others: every rule refused for this module as the mobile, in rule order, each as a
+  // refusal (reason kRule) naming the cell and module at stake, its sentence naming the rule. A 3D
+  // Catom's refused rolls are not listed (`datomsim moves --module catom3d` lists them).
+  virtual std::vector<MoveRefusal> refusedMotions() const = 0;
+  // A sentence for logs, e.g. "turn left about module 12 at 3,4,1 to 4,4,2 (1 helpers)"; built
+  // only when asked, so that listing motions costs no text.
+  virtual std::string describe(const Motion& motion) const = 0;
+  // Asks for a motion: it starts (onMotionEnded when it is over), waits in the run's queue, or
+  // is refused at once with the reason. The simulator takes the motion back by its rule number,
+  // start cell and helpers (the pivot is the module the rule turns about now) and judges it on the
+  // world as it is now, counting the pistons its helpers have compressed for it (a motion kept
+  // from an earlier list is fine): the rule must still hold, every helper must hold its piston,
+  // nothing it needs may be reserved by a motion in progress, and with connectivity on the
+  // ensemble must not fall apart (docs/simulation.md). A refusal is a value to act on: retry
+  // later, or choose another motion.
   virtual MoveResult move(const Motion& motion) = 0;
+
+  // The goals of the rules that hold with this module as the pivot and a mobile imagined in the
+  // neighbouring cell `mobileCell`, judged from this module's neighbourhood (the distributed
+  // gradient's view, paper section VII), without building the motions. Only rules whose goal
+  // lies in a `wanted` direction are judged (bit d: the neighbouring cell in world direction d).
+  // Writes up to 6 cells and returns how many.
+  static constexpr uint16_t kAllDirections = 0xFFF;
+  virtual int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,
+                           uint16_t wanted = kAllDirections) const = 0;
 
   // Calls onTimer(tag) after `delay` (e.g. 500 * kMillisecond).
   virtual void setTimer(Time delay, int tag) = 0;

@@ -13,7 +13,7 @@ namespace {
 constexpr HelperDuty::Terms kPaperTerms{.oneMotion = true};
 }  // namespace
 
-void FollowGradientProgram::onTimer(program::ModuleContext& context, int tag) {
+void FollowGradientProgram::onTimer(Context& context, int tag) {
   GradientProgram::onTimer(context, tag);
   if (tag != kFollowTrigger || !isMobile(context) || phase() != Phase::kIdle) return;
   walk_ = std::make_unique<Walk>();
@@ -22,18 +22,13 @@ void FollowGradientProgram::onTimer(program::ModuleContext& context, int tag) {
 }
 
 // Algorithm 1, followGradient(): list the valid rules and ask their pivots for distances.
-void FollowGradientProgram::step(program::ModuleContext& context) {
+void FollowGradientProgram::step(Context& context) {
   if (context.cell() == parameters().goal) {
     walk_->arrived = true;
     walk_->phase = Phase::kDone;
     return;
   }
-  walk_->candidates.clear();
-  for (motion::Evaluation& evaluation : context.motions()) {
-    if (auto* motion = std::get_if<motion::Motion>(&evaluation)) {
-      walk_->candidates.push_back(std::move(*motion));
-    }
-  }
+  walk_->candidates = context.motions();
   if (walk_->candidates.empty()) {
     // Say which: nothing to turn about, or every rule refused.
     if (context.latchedConnectors() == 0) {
@@ -49,7 +44,7 @@ void FollowGradientProgram::step(program::ModuleContext& context) {
   for (size_t i = 0; i < walk_->candidates.size(); ++i) {
     const auto direction =
         geometry::directionOfOffset(walk_->candidates[i].pivotCell - context.cell());
-    const int connector = context.orientation().ownConnector(*direction);
+    const int connector = context.ownConnector(*direction);
     const Status sent = context.send(
         connector, Message::of(DistanceQuery{walk_->candidates[i].goal, static_cast<int32_t>(i)}));
     if (!sent.ok()) return fail(sent.error());
@@ -57,7 +52,7 @@ void FollowGradientProgram::step(program::ModuleContext& context) {
 }
 
 // Smallest distance first; ties to the first rule in table order (walk_->candidates keeps it).
-void FollowGradientProgram::choose(program::ModuleContext& context) {
+void FollowGradientProgram::choose(Context& context) {
   size_t best = 0;
   for (size_t i = 1; i < walk_->candidates.size(); ++i) {
     if (walk_->candidateDistances[i] < walk_->candidateDistances[best]) best = i;
@@ -73,21 +68,21 @@ void FollowGradientProgram::choose(program::ModuleContext& context) {
   if (walk_->helpers.size() == 0) move(context);
 }
 
-void FollowGradientProgram::move(program::ModuleContext& context) {
+void FollowGradientProgram::move(Context& context) {
   walk_->phase = Phase::kMoving;
   const MoveResult moving = context.move(*walk_->chosen);
   if (!moving.ok()) fail(moving.error());
 }
 
-void FollowGradientProgram::onMotionDone(program::ModuleContext& context) {
+void FollowGradientProgram::onMotionEnded(Context& context, const MotionEnded& ended) {
+  if (!ended.arrived) return;
   walk_->path.push_back(context.cell());
   walk_->phase = Phase::kReleasing;
   recordFailure(walk_->helpers.letGo(context, router_));
   if (walk_->helpers.size() == 0) step(context);
 }
 
-void FollowGradientProgram::onMessage(program::ModuleContext& context, int ownConnector,
-                                      const Message& message) {
+void FollowGradientProgram::onMessage(Context& context, int ownConnector, const Message& message) {
   // A pivot answers the mobile's question from what it stores.
   if (const auto* query = message.as<DistanceQuery>()) {
     recordFailure(
@@ -128,7 +123,7 @@ HelperDuty& FollowGradientProgram::duty() {
   return *duty_;
 }
 
-void FollowGradientProgram::handleRouted(program::ModuleContext& context, const RoutedMsg& routed,
+void FollowGradientProgram::handleRouted(Context& context, const RoutedMsg& routed,
                                          std::string_view type) {
   if (type == DeformMsg::kName) {
     const Status status = duty().onDeformRequest(context, router_, routed, false);
@@ -144,7 +139,7 @@ void FollowGradientProgram::handleRouted(program::ModuleContext& context, const 
   }
 }
 
-void FollowGradientProgram::onDeformationDone(program::ModuleContext& context) {
+void FollowGradientProgram::onDeformationDone(Context& context) {
   if (duty_) recordFailure(duty_->onDeformationDone(context, router_, false));
 }
 

@@ -16,7 +16,6 @@
 
 #include "algorithms/gradient.h"
 #include "algorithms/helpers.h"
-#include "motion/motion_values.h"
 
 namespace datomsim::algorithms {
 
@@ -41,11 +40,11 @@ class FollowGradientProgram : public GradientProgram {
   explicit FollowGradientProgram(const GradientParameters& parameters)
       : GradientProgram(parameters) {}
 
-  void onMessage(program::ModuleContext& context, int ownConnector,
-                 const Message& message) override;
-  void onTimer(program::ModuleContext& context, int tag) override;
-  void onDeformationDone(program::ModuleContext& context) override;
-  void onMotionDone(program::ModuleContext& context) override;
+  void onMessage(Context& context, int ownConnector, const Message& message) override;
+  void onTimer(Context& context, int tag) override;
+  void onDeformationDone(Context& context) override;
+  // The mobile arrived (Algorithm 1 runs without a queue, so nothing else ends its motions).
+  void onMotionEnded(Context& context, const MotionEnded& ended) override;
 
   // The mobile's cells, start first; and whether it reached G.
   const std::vector<geometry::Cell>& path() const;
@@ -55,15 +54,14 @@ class FollowGradientProgram : public GradientProgram {
 
  private:
   // The mobile's side.
-  void step(program::ModuleContext& context);
-  void choose(program::ModuleContext& context);
-  void move(program::ModuleContext& context);
+  void step(Context& context);
+  void choose(Context& context);
+  void move(Context& context);
   void fail(const std::string& why);
 
   // A helper's side, made on its first request (most modules are never asked).
   HelperDuty& duty();
-  void handleRouted(program::ModuleContext& context, const RoutedMsg& routed,
-                    std::string_view type);
+  void handleRouted(Context& context, const RoutedMsg& routed, std::string_view type);
 
   enum class Phase { kIdle, kAsking, kDeforming, kMoving, kReleasing, kDone };
   Phase phase() const { return walk_ ? walk_->phase : Phase::kIdle; }
@@ -71,10 +69,10 @@ class FollowGradientProgram : public GradientProgram {
   // The mobile's state, made when it is triggered: the other modules (all but one) keep none.
   struct Walk {
     Phase phase = Phase::kIdle;
-    std::vector<motion::Motion> candidates;
+    std::vector<Motion> candidates;
     std::vector<int32_t> candidateDistances;
     int waitingReplies = 0;
-    std::optional<motion::Motion> chosen;
+    std::optional<Motion> chosen;
     MotionHelpers helpers;
     uint32_t nextRequest = 1;
     std::vector<geometry::Cell> path;

@@ -6,7 +6,7 @@ namespace datomsim::algorithms {
 
 using geometry::Cell;
 
-void GradientProgram::onStart(program::ModuleContext& context) {
+void GradientProgram::onStart(Context& context) {
   if (isMobile(context)) return;
   // The modules around G start the gradient: G is at distance 0 (paper, section VII), which each
   // of them knows by itself.
@@ -15,8 +15,7 @@ void GradientProgram::onStart(program::ModuleContext& context) {
   }
 }
 
-void GradientProgram::onMessage(program::ModuleContext& context, int ownConnector,
-                                const Message& message) {
+void GradientProgram::onMessage(Context& context, int ownConnector, const Message& message) {
   // The mobile stores no distance, but it passes routed notices on like any module.
   if (isMobile(context)) {
     if (const auto* notice = message.as<DistanceNotice>()) {
@@ -39,7 +38,7 @@ void GradientProgram::onMessage(program::ModuleContext& context, int ownConnecto
   }
 }
 
-void GradientProgram::onTimer(program::ModuleContext& context, int tag) {
+void GradientProgram::onTimer(Context& context, int tag) {
   if (tag != kTellTimer) return;
   // The end of the instant: every message that arrived with the one that armed the timer has been
   // heard (they were sent before it was set), so each cell found is told once, at its best.
@@ -52,7 +51,7 @@ void GradientProgram::onTimer(program::ModuleContext& context, int tag) {
   }
 }
 
-int32_t GradientProgram::distanceOf(program::ModuleContext& context, const Cell& cell) const {
+int32_t GradientProgram::distanceOf(Context& context, const Cell& cell) const {
   const auto direction = geometry::directionOfOffset(cell - context.cell());
   return direction ? distanceTowards(*direction) : kUnknown;
 }
@@ -71,17 +70,16 @@ void GradientProgram::setDistance(int direction, int32_t distance) {
   (*state.wide)[size_t(direction)] = distance;
 }
 
-void GradientProgram::spread(program::ModuleContext& context, const Cell& cell, int32_t distance) {
+void GradientProgram::spread(Context& context, const Cell& cell, int32_t distance) {
   const Cell self = context.cell();
   const uint16_t latched = context.latchedConnectors();
-  const geometry::Orientation orientation = context.orientation();
   const uint16_t occupied = context.occupiedAround(cell).value_or(0);
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     const Cell around = cell + geometry::neighbourOffset(d);
     if (around == self || !(occupied & (1u << d))) continue;
     // A module around the cell that is this module's neighbour, latched: straight there.
     if (const auto direction = geometry::directionOfOffset(around - self)) {
-      const int connector = orientation.ownConnector(*direction);
+      const int connector = context.ownConnector(*direction);
       if (latched & (1u << connector)) {
         recordFailure(context.send(connector, Message::of(DistanceMsg{cell, distance})));
         continue;
@@ -97,7 +95,7 @@ void GradientProgram::spread(program::ModuleContext& context, const Cell& cell, 
   }
 }
 
-void GradientProgram::learn(program::ModuleContext& context, int direction, int32_t distance) {
+void GradientProgram::learn(Context& context, int direction, int32_t distance) {
   // The cells around this module whose distance it is about to lower, smallest first: one
   // improvement can cascade around the module (as the pivot it moves a mobile from one of its
   // neighbouring cells to another), and taking the smallest first sets each cell once per cascade,

@@ -3,7 +3,7 @@
 // Every fixed module stores the distance of each of its 12 neighbouring cells (how many motions a
 // mobile needs from there to the goal G). The modules around G start with 0. A module that learns
 // a better distance for a neighbouring cell X judges, as the pivot, every rule that moves a mobile
-// imagined at X (from its own neighbourhood, ModuleContext::goalsAsPivot); each valid goal Y, a
+// imagined at X (from its own neighbourhood, Context::goalsAsPivot); each valid goal Y, a
 // neighbour of the pivot too, gets distance(X) + 1 if that is better. A distance a module finds so
 // is told to every module around its cell: in a DistanceMsg to a latched neighbour, or routed hop
 // by hop (DistanceNotice) to the others, which the module senses as it senses the cells of a rule.
@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "algorithms/routing.h"
+#include "datomsim/program.h"
 #include "geometry/cell.h"
-#include "program/module_program.h"
 
 namespace datomsim::algorithms {
 
@@ -49,7 +49,7 @@ struct GradientParameters {
   ModuleId mobile;
 };
 
-class GradientProgram : public program::ModuleProgram {
+class GradientProgram : public Program {
  public:
   static constexpr int32_t kUnknown = INT32_MAX;
 
@@ -60,13 +60,12 @@ class GradientProgram : public program::ModuleProgram {
   // The timer tag of telling what a module found; programs built on this one use other tags.
   static constexpr int kTellTimer = -1;
 
-  void onStart(program::ModuleContext& context) override;
-  void onMessage(program::ModuleContext& context, int ownConnector,
-                 const Message& message) override;
-  void onTimer(program::ModuleContext& context, int tag) override;
+  void onStart(Context& context) override;
+  void onMessage(Context& context, int ownConnector, const Message& message) override;
+  void onTimer(Context& context, int tag) override;
 
   // The distance this module stores for a neighbouring cell, or kUnknown.
-  int32_t distanceOf(program::ModuleContext& context, const geometry::Cell& cell) const;
+  int32_t distanceOf(Context& context, const geometry::Cell& cell) const;
   // The distance stored for the neighbouring cell in world direction d, or kUnknown.
   int32_t distanceTowards(int direction) const {
     if (rare_ && rare_->wide) return (*rare_->wide)[size_t(direction)];
@@ -77,9 +76,7 @@ class GradientProgram : public program::ModuleProgram {
   std::optional<std::string> failure() const { return rare_ ? rare_->failure : std::nullopt; }
 
  protected:
-  bool isMobile(const program::ModuleContext& context) const {
-    return context.id() == parameters_->mobile;
-  }
+  bool isMobile(const Context& context) const { return context.id() == parameters_->mobile; }
   const GradientParameters& parameters() const { return *parameters_; }
   // Keeps the first reason this module gave up; a status that is ok changes nothing.
   void recordFailure(const std::string& why) {
@@ -110,12 +107,12 @@ class GradientProgram : public program::ModuleProgram {
   void setDistance(int direction, int32_t distance);
 
   // Tells every module around the cell its new distance.
-  void spread(program::ModuleContext& context, const geometry::Cell& cell, int32_t distance);
+  void spread(Context& context, const geometry::Cell& cell, int32_t distance);
 
   // Stores a better distance for the neighbour cell in world direction d, one that every module
   // around the cell knows (heard from the module that found it, or G's 0), and follows what it
   // implies around this module: the distances found are told around their cells.
-  void learn(program::ModuleContext& context, int direction, int32_t distance);
+  void learn(Context& context, int direction, int32_t distance);
 
   const GradientParameters* parameters_;
   std::unique_ptr<Rare> rare_;

@@ -33,13 +33,13 @@ MotionHelpers::Answers MotionHelpers::hear(const RoutedMsg& answer, bool granted
 
 // ---- A helper's side ------------------------------------------------------------------------
 
-Status HelperDuty::onDeformRequest(program::ModuleContext& context, Router& router,
-                                   const RoutedMsg& request, bool busy) {
+Status HelperDuty::onDeformRequest(Context& context, Router& router, const RoutedMsg& request,
+                                   bool busy) {
   if (terms_->oneMotion) {
     // Paper, Algorithm 1, DeformMsg handler: compress, answer when done.
     waitingForPiston_.assign(1, request);
     releasing_ = false;
-    return context.compress(context.orientation().ownPiston(request.axis));
+    return context.compress(context.pistonAlong(request.axis));
   }
   // A piston on its way back is asked again once at rest: the mover that just passed often
   // needs it for its next motion too, and a refusal would send it another way.
@@ -58,7 +58,7 @@ Status HelperDuty::onDeformRequest(program::ModuleContext& context, Router& rout
     }
     return answer(context, router, request, true);
   }
-  const Status compressed = context.compress(context.orientation().ownPiston(request.axis));
+  const Status compressed = context.compress(context.pistonAlong(request.axis));
   if (!compressed.ok()) return answer(context, router, request, false);
   heldAxis_ = request.axis;
   compressing_ = true;
@@ -67,21 +67,20 @@ Status HelperDuty::onDeformRequest(program::ModuleContext& context, Router& rout
   return Ok{};
 }
 
-void HelperDuty::grant(program::ModuleContext& context, const RoutedMsg& request) {
+void HelperDuty::grant(Context& context, const RoutedMsg& request) {
   if (grants_.empty()) context.setTimer(terms_->lease, terms_->leaseTimer);
   grants_.push_back({request.request, context.now() + terms_->lease});
   ++holders_;
 }
 
-Status HelperDuty::onRenewRequest(program::ModuleContext& context, const RoutedMsg& request) {
+Status HelperDuty::onRenewRequest(Context& context, const RoutedMsg& request) {
   for (Grant& grant : grants_) {
     if (grant.request == request.request) grant.until = context.now() + terms_->lease;
   }
   return Ok{};
 }
 
-Status HelperDuty::onReleaseRequest(program::ModuleContext& context, Router& router,
-                                    const RoutedMsg& request) {
+Status HelperDuty::onReleaseRequest(Context& context, Router& router, const RoutedMsg& request) {
   if (terms_->oneMotion) {
     // Acknowledged once the piston is back (onDeformationDone).
     waitingForPiston_.assign(1, request);
@@ -109,7 +108,7 @@ Status HelperDuty::onReleaseRequest(program::ModuleContext& context, Router& rou
   return acknowledged;
 }
 
-Status HelperDuty::onDeformationDone(program::ModuleContext& context, Router& router, bool busy) {
+Status HelperDuty::onDeformationDone(Context& context, Router& router, bool busy) {
   if (terms_->oneMotion) {
     if (waitingForPiston_.empty()) return Ok{};
     RoutedMsg answer;
@@ -143,7 +142,7 @@ Status HelperDuty::onDeformationDone(program::ModuleContext& context, Router& ro
   return first;
 }
 
-bool HelperDuty::onTimer(program::ModuleContext& context, int tag) {
+bool HelperDuty::onTimer(Context& context, int tag) {
   if (terms_->oneMotion) return false;
   if (tag == terms_->leaseTimer) {
     // Grants whose mover never came back lapse; the piston goes when none is left.
@@ -162,7 +161,7 @@ bool HelperDuty::onTimer(program::ModuleContext& context, int tag) {
   return false;
 }
 
-void HelperDuty::releaseWhenFree(program::ModuleContext& context) {
+void HelperDuty::releaseWhenFree(Context& context) {
   if (holders_ != 0 || heldAxis_ < 0 || releasing_ || compressing_) return;
   const Status released = context.release();
   if (released.ok()) {
@@ -172,7 +171,7 @@ void HelperDuty::releaseWhenFree(program::ModuleContext& context) {
   }
 }
 
-Status HelperDuty::answer(program::ModuleContext& context, Router& router, const RoutedMsg& request,
+Status HelperDuty::answer(Context& context, Router& router, const RoutedMsg& request,
                           bool granted) {
   // Built from the request, its routing state (hops left, flood bound) included, as the
   // reconfiguration's runs have always had it.

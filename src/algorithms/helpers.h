@@ -19,10 +19,9 @@
 #include <vector>
 
 #include "algorithms/routing.h"
+#include "datomsim/program.h"
 #include "datomsim/time.h"
 #include "geometry/cell.h"
-#include "motion/motion_values.h"
-#include "program/module_program.h"
 
 namespace datomsim::algorithms {
 
@@ -57,11 +56,10 @@ class MotionHelpers {
   // Asks every helper of `motion` to compress, each request numbered by `number()`. Returns the
   // first failure to send.
   template <typename Number>
-  Status ask(program::ModuleContext& context, Router& router, const motion::Motion& motion,
-             Number&& number) {
+  Status ask(Context& context, Router& router, const Motion& motion, Number&& number) {
     asked_.clear();
-    for (const motion::Deformation& d : motion.deformations) {
-      asked_.push_back({d.cell, d.firstAxis, number(), false});
+    for (const Helper& d : motion.helpers) {
+      asked_.push_back({d.cell, int8_t(d.axis), number(), false});
     }
     refused_ = false;
     waiting_ = int(asked_.size());
@@ -79,16 +77,14 @@ class MotionHelpers {
   // Lets go of every helper asked, not only those heard from: an answer may have been lost on its
   // way back (a helper whose piston retracts the connector that faced the mobile), and a release
   // for a request never granted is answered and ignored.
-  Status letGo(program::ModuleContext& context, Router& router) {
+  Status letGo(Context& context, Router& router) {
     waiting_ = int(asked_.size());
     return send<ReleaseMsg>(context, router);
   }
   // An AckRelease heard: whether it was the last awaited.
   bool released() { return --waiting_ == 0; }
   // Keeps the grants of every helper asked alive (RenewMsg).
-  Status renew(program::ModuleContext& context, Router& router) {
-    return send<RenewMsg>(context, router);
-  }
+  Status renew(Context& context, Router& router) { return send<RenewMsg>(context, router); }
 
   // How many helpers were asked, and how many answers are still awaited.
   int size() const { return int(asked_.size()); }
@@ -102,7 +98,7 @@ class MotionHelpers {
  private:
   // One message of type T to every helper asked, with its request's number.
   template <typename T>
-  Status send(program::ModuleContext& context, Router& router) {
+  Status send(Context& context, Router& router) {
     Status first = Ok{};
     for (const Asked& helper : asked_) {
       T message;
@@ -148,25 +144,22 @@ class HelperDuty {
 
   // A DeformMsg for this module. A module busy with a motion of its own makes way for nobody.
   // Returns the first failure (a message refused; with one motion, a piston refused).
-  Status onDeformRequest(program::ModuleContext& context, Router& router, const RoutedMsg& request,
-                         bool busy);
-  Status onReleaseRequest(program::ModuleContext& context, Router& router,
-                          const RoutedMsg& request);
-  Status onRenewRequest(program::ModuleContext& context, const RoutedMsg& request);
+  Status onDeformRequest(Context& context, Router& router, const RoutedMsg& request, bool busy);
+  Status onReleaseRequest(Context& context, Router& router, const RoutedMsg& request);
+  Status onRenewRequest(Context& context, const RoutedMsg& request);
   // The piston this module asked to move is done; `busy` as for onDeformRequest, for the requests
   // that waited for it.
-  Status onDeformationDone(program::ModuleContext& context, Router& router, bool busy);
+  Status onDeformationDone(Context& context, Router& router, bool busy);
   // Whether the timer was the duty's (Terms), handled.
-  bool onTimer(program::ModuleContext& context, int tag);
+  bool onTimer(Context& context, int tag);
 
   // Whether its piston is held for others, or on its way: a module that makes way does not move.
   bool makingWay() const { return heldAxis_ >= 0 || compressing_ || releasing_; }
 
  private:
-  Status answer(program::ModuleContext& context, Router& router, const RoutedMsg& request,
-                bool granted);
-  void grant(program::ModuleContext& context, const RoutedMsg& request);
-  void releaseWhenFree(program::ModuleContext& context);
+  Status answer(Context& context, Router& router, const RoutedMsg& request, bool granted);
+  void grant(Context& context, const RoutedMsg& request);
+  void releaseWhenFree(Context& context);
 
   const Terms* terms_;
   struct Grant {

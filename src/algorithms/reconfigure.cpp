@@ -10,7 +10,7 @@ namespace datomsim::algorithms {
 
 using geometry::Cell;
 
-void ReconfigureProgram::onStart(program::ModuleContext& context) {
+void ReconfigureProgram::onStart(Context& context) {
   distances_.fill(kUnknown);
   // A module on a target cell stays if its cell could be filled now, in the order of filling;
   // one that sits there out of order would wall in the cells to fill before it: it moves on,
@@ -27,8 +27,7 @@ void ReconfigureProgram::onStart(program::ModuleContext& context) {
 
 // ---- Messages -------------------------------------------------------------------------------
 
-void ReconfigureProgram::onMessage(program::ModuleContext& context, int ownConnector,
-                                   const Message& message) {
+void ReconfigureProgram::onMessage(Context& context, int ownConnector, const Message& message) {
   if (const auto* version = message.as<GradientVersion>()) return adopt(context, version->version);
   auto learnFrom = [&](const Cell& cell, int32_t distance, uint64_t version) {
     if (version < version_) return;
@@ -108,14 +107,14 @@ void ReconfigureProgram::onMessage(program::ModuleContext& context, int ownConne
   });
 }
 
-void ReconfigureProgram::onDeformationDone(program::ModuleContext& context) {
+void ReconfigureProgram::onDeformationDone(Context& context) {
   // A mover moves no piston of its own: this is its piston as a helper.
   note(helping_.onDeformationDone(context, router_, busy()));
 }
 
 // ---- Timers ---------------------------------------------------------------------------------
 
-void ReconfigureProgram::onTimer(program::ModuleContext& context, int tag) {
+void ReconfigureProgram::onTimer(Context& context, int tag) {
   if (tag >= kWatchdog) return onWatchdog(context, uint32_t(tag - kWatchdog));
   if (tag == kNewVersion) return adopt(context, nextVersion(context.now() - 1));
   if (tag == kSpread) return spreadFound(context);

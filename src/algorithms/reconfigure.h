@@ -39,8 +39,8 @@
 #include "algorithms/helpers.h"
 #include "algorithms/routing.h"
 #include "algorithms/target_shape.h"
+#include "datomsim/program.h"
 #include "geometry/cell.h"
-#include "program/module_program.h"
 
 namespace datomsim::algorithms {
 
@@ -90,20 +90,19 @@ struct SettledReply {
   bool settled;
 };
 
-class ReconfigureProgram : public program::ModuleProgram {
+class ReconfigureProgram : public Program {
  public:
   static constexpr int32_t kUnknown = INT32_MAX;
 
   explicit ReconfigureProgram(std::shared_ptr<const TargetShape> target)
       : target_(std::move(target)) {}
 
-  void onStart(program::ModuleContext& context) override;
-  void onMessage(program::ModuleContext& context, int ownConnector,
-                 const Message& message) override;
-  void onTimer(program::ModuleContext& context, int tag) override;
-  void onDeformationDone(program::ModuleContext& context) override;
-  void onMotionDone(program::ModuleContext& context) override;
-  void onMotionRefused(program::ModuleContext& context, const MoveRefusal& refusal) override;
+  void onStart(Context& context) override;
+  void onMessage(Context& context, int ownConnector, const Message& message) override;
+  void onTimer(Context& context, int tag) override;
+  void onDeformationDone(Context& context) override;
+  // Arrived: the next step; refused when its turn came in the run's queue: another try later.
+  void onMotionEnded(Context& context, const MotionEnded& ended) override;
 
   bool settled() const { return settled_; }
   int motions() const { return motions_; }
@@ -145,40 +144,40 @@ class ReconfigureProgram : public program::ModuleProgram {
   static constexpr int32_t kLayerBias = 3;
 
   // The gradient (reconfigure_gradient.cpp).
-  void adopt(program::ModuleContext& context, uint64_t version);
-  void seedOpenCells(program::ModuleContext& context);
-  void learn(program::ModuleContext& context, int direction, int32_t distance);
-  void spread(program::ModuleContext& context, const geometry::Cell& cell, int32_t distance);
-  void spreadFound(program::ModuleContext& context);
+  void adopt(Context& context, uint64_t version);
+  void seedOpenCells(Context& context);
+  void learn(Context& context, int direction, int32_t distance);
+  void spread(Context& context, const geometry::Cell& cell, int32_t distance);
+  void spreadFound(Context& context);
   // Whether a target cell may be filled now: empty (or held by this module, for its own cell),
   // some module under it, every target cell under it filled, and every target cell of its layer
   // next to it and nearer the layer's centre filled.
-  bool isOpen(program::ModuleContext& context, const geometry::Cell& cell) const;
+  bool isOpen(Context& context, const geometry::Cell& cell) const;
 
   // Settling and pockets (reconfigure_settling.cpp). On an open cell: settles once the modules of
   // the cells to be filled before it say they stay.
-  void confirm(program::ModuleContext& context);
-  void settle(program::ModuleContext& context);
+  void confirm(Context& context);
+  void settle(Context& context);
   // A settled module next to a pocket that it can fill leaves its cell for it.
-  void repairPocket(program::ModuleContext& context);
-  void stepIntoPocket(program::ModuleContext& context);
+  void repairPocket(Context& context);
+  void stepIntoPocket(Context& context);
 
   // The mover (reconfigure_mover.cpp).
-  void watch(program::ModuleContext& context);
-  void onWatchdog(program::ModuleContext& context, uint32_t round);
-  void step(program::ModuleContext& context);
-  void choose(program::ModuleContext& context);
-  void retryLater(program::ModuleContext& context);
+  void watch(Context& context);
+  void onWatchdog(Context& context, uint32_t round);
+  void step(Context& context);
+  void choose(Context& context);
+  void retryLater(Context& context);
   // An attempt failed (a helper refused or was silent, the engine refused): counted, and its goal
   // remembered until the next motion succeeds.
   void attemptFailed();
   // A candidate's distance with the failures at its goal counted against it.
   int64_t effective(int candidate) const;
   // A helper's AckDeform or NackDeform.
-  void onHelperAnswer(program::ModuleContext& context, const RoutedMsg& answer, bool granted);
-  void move(program::ModuleContext& context);
-  void releaseHelpers(program::ModuleContext& context);
-  void afterRelease(program::ModuleContext& context);
+  void onHelperAnswer(Context& context, const RoutedMsg& answer, bool granted);
+  void move(Context& context);
+  void releaseHelpers(Context& context);
+  void afterRelease(Context& context);
   // Whether this module holds a piston for another's motion, or is moving one.
   bool makingWay() const { return helping_.makingWay(); }
   // Whether this module is busy with a motion of its own: it makes way for nobody.
@@ -197,12 +196,12 @@ class ReconfigureProgram : public program::ModuleProgram {
   // Mover state.
   bool settled_ = false;
   Phase phase_ = Phase::kIdle;
-  std::vector<motion::Motion> candidates_;
+  std::vector<Motion> candidates_;
   std::vector<int32_t> candidateDistances_;
   std::vector<uint64_t> candidateVersions_;
   std::vector<bool> candidateSettled_;
   int waitingReplies_ = 0;
-  std::optional<motion::Motion> chosen_;
+  std::optional<Motion> chosen_;
   int32_t chosenDistance_ = kUnknown;
   uint64_t chosenVersion_ = 0;
   MotionHelpers helpers_;  // the chosen motion's

@@ -8,7 +8,7 @@ namespace datomsim::algorithms {
 
 using geometry::Cell;
 
-bool ReconfigureProgram::isOpen(program::ModuleContext& context, const Cell& cell) const {
+bool ReconfigureProgram::isOpen(Context& context, const Cell& cell) const {
   if (!target_->contains(cell)) return false;
   if (cell != context.cell() && context.occupied(cell).value_or(true)) return false;
   // From the bottom up, on support: a module under it, or the ground (layer 0).
@@ -33,7 +33,7 @@ bool ReconfigureProgram::isOpen(program::ModuleContext& context, const Cell& cel
   return true;
 }
 
-void ReconfigureProgram::adopt(program::ModuleContext& context, uint64_t version) {
+void ReconfigureProgram::adopt(Context& context, uint64_t version) {
   if (version <= version_) return;
   version_ = version;
   distances_.fill(kUnknown);
@@ -48,7 +48,7 @@ void ReconfigureProgram::adopt(program::ModuleContext& context, uint64_t version
   if (settled_) repairPocket(context);
 }
 
-void ReconfigureProgram::seedOpenCells(program::ModuleContext& context) {
+void ReconfigureProgram::seedOpenCells(Context& context) {
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     const Cell cell = context.cell() + geometry::neighbourOffset(d);
     // An open cell one layer up looks kLayerBias motions farther: movers finish the lower layers
@@ -57,7 +57,7 @@ void ReconfigureProgram::seedOpenCells(program::ModuleContext& context) {
   }
 }
 
-void ReconfigureProgram::learn(program::ModuleContext& context, int direction, int32_t distance) {
+void ReconfigureProgram::learn(Context& context, int direction, int32_t distance) {
   // As in the paper's gradient (gradient.cpp): a worklist over this module's neighbour cells.
   std::vector<std::pair<int, int32_t>> pending = {{direction, distance}};
   while (!pending.empty()) {
@@ -78,7 +78,7 @@ void ReconfigureProgram::learn(program::ModuleContext& context, int direction, i
   }
 }
 
-void ReconfigureProgram::spreadFound(program::ModuleContext& context) {
+void ReconfigureProgram::spreadFound(Context& context) {
   const uint16_t cells = unspread_;
   unspread_ = 0;
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
@@ -88,8 +88,7 @@ void ReconfigureProgram::spreadFound(program::ModuleContext& context) {
   }
 }
 
-void ReconfigureProgram::spread(program::ModuleContext& context, const Cell& cell,
-                                int32_t distance) {
+void ReconfigureProgram::spread(Context& context, const Cell& cell, int32_t distance) {
   const uint16_t latched = context.latchedConnectors();
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     const Cell around = cell + geometry::neighbourOffset(d);

@@ -8,12 +8,12 @@ namespace datomsim::algorithms {
 
 using geometry::Cell;
 
-void ReconfigureProgram::watch(program::ModuleContext& context) {
+void ReconfigureProgram::watch(Context& context) {
   ++round_;
   context.setTimer(kPatience, kWatchdog + int(round_ & 0xffffff));
 }
 
-void ReconfigureProgram::onWatchdog(program::ModuleContext& context, uint32_t round) {
+void ReconfigureProgram::onWatchdog(Context& context, uint32_t round) {
   if (round != (round_ & 0xffffff)) return;
   // Answers lost on the way (a module that moved, a route cut): give the round up.
   if (phase_ == Phase::kAsking) {
@@ -33,18 +33,13 @@ void ReconfigureProgram::onWatchdog(program::ModuleContext& context, uint32_t ro
   }
 }
 
-void ReconfigureProgram::step(program::ModuleContext& context) {
+void ReconfigureProgram::step(Context& context) {
   if (settled_) return;
   // A module that holds a piston for another's motion waits for it to be done.
   if (makingWay()) return retryLater(context);
   if (leavingFor_) return stepIntoPocket(context);
   if (isOpen(context, context.cell())) return confirm(context);
-  candidates_.clear();
-  for (motion::Evaluation& evaluation : context.motions()) {
-    if (auto* motion = std::get_if<motion::Motion>(&evaluation)) {
-      candidates_.push_back(std::move(*motion));
-    }
-  }
+  candidates_ = context.motions();
   if (candidates_.empty()) return retryLater(context);
   candidateDistances_.assign(candidates_.size(), kUnknown);
   candidateVersions_.assign(candidates_.size(), 0);
@@ -53,7 +48,7 @@ void ReconfigureProgram::step(program::ModuleContext& context) {
   phase_ = Phase::kAsking;
   for (size_t i = 0; i < candidates_.size(); ++i) {
     const auto direction = geometry::directionOfOffset(candidates_[i].pivotCell - context.cell());
-    const int connector = context.orientation().ownConnector(*direction);
+    const int connector = context.ownConnector(*direction);
     const Status sent =
         context.send(connector, Message::of(GoalQuery{candidates_[i].goal, int32_t(i)}));
     if (!sent.ok()) --waitingReplies_;  // not latched to that pivot any more
@@ -77,15 +72,15 @@ void ReconfigureProgram::attemptFailed() {
 int64_t ReconfigureProgram::effective(int candidate) const {
   // In quarter motions: a goal whose attempts failed looks farther each time, so that another way
   // gets its chance; between goals as near, the one that needs fewer helpers.
-  int64_t cost = 4 * int64_t(candidateDistances_[candidate]) +
-                 int64_t(candidates_[candidate].deformations.size());
+  int64_t cost =
+      4 * int64_t(candidateDistances_[candidate]) + int64_t(candidates_[candidate].helpers.size());
   for (const auto& [goal, times] : failedGoals_) {
     if (goal == candidates_[candidate].goal) cost += 12 * int64_t(times);
   }
   return cost;
 }
 
-void ReconfigureProgram::choose(program::ModuleContext& context) {
+void ReconfigureProgram::choose(Context& context) {
   // Asked to make way meanwhile: that comes first.
   if (makingWay()) return retryLater(context);
   // The smallest distance of the newest version; ties to the first rule in table order. A motion
@@ -119,7 +114,7 @@ void ReconfigureProgram::choose(program::ModuleContext& context) {
   chosenDistance_ = candidateDistances_[best];
   chosenVersion_ = newest;
   helpers_.clear();
-  if (chosen_->deformations.empty()) {
+  if (chosen_->helpers.empty()) {
     phase_ = Phase::kMoving;
     const MoveResult moved = context.move(*chosen_);
     if (!moved.ok()) {
@@ -137,8 +132,7 @@ void ReconfigureProgram::choose(program::ModuleContext& context) {
   watch(context);
 }
 
-void ReconfigureProgram::onHelperAnswer(program::ModuleContext& context, const RoutedMsg& answer,
-                                        bool granted) {
+void ReconfigureProgram::onHelperAnswer(Context& context, const RoutedMsg& answer, bool granted) {
   if (phase_ != Phase::kDeforming) return;
   const MotionHelpers::Answers answers = helpers_.hear(answer, granted);
   if (answers == MotionHelpers::Answers::kWaiting) return;
@@ -150,7 +144,7 @@ void ReconfigureProgram::onHelperAnswer(program::ModuleContext& context, const R
   move(context);
 }
 
-void ReconfigureProgram::move(program::ModuleContext& context) {
+void ReconfigureProgram::move(Context& context) {
   phase_ = Phase::kMoving;
   const MoveResult moved = context.move(*chosen_);
   if (!moved.ok()) {
@@ -163,13 +157,13 @@ void ReconfigureProgram::move(program::ModuleContext& context) {
   }
 }
 
-void ReconfigureProgram::retryLater(program::ModuleContext& context) {
+void ReconfigureProgram::retryLater(Context& context) {
   phase_ = Phase::kWaiting;
   ++idleRounds_;
   context.setTimer(context.random().between(200, 1200) * kMillisecond, kStep);
 }
 
-void ReconfigureProgram::releaseHelpers(program::ModuleContext& context) {
+void ReconfigureProgram::releaseHelpers(Context& context) {
   // Every helper asked this round (MotionHelpers::letGo).
   phase_ = Phase::kReleasing;
   if (helpers_.size() == 0) return afterRelease(context);
@@ -177,7 +171,7 @@ void ReconfigureProgram::releaseHelpers(program::ModuleContext& context) {
   watch(context);
 }
 
-void ReconfigureProgram::afterRelease(program::ModuleContext& context) {
+void ReconfigureProgram::afterRelease(Context& context) {
   helpers_.clear();
   chosen_.reset();
   phase_ = Phase::kWaiting;
@@ -190,7 +184,13 @@ void ReconfigureProgram::afterRelease(program::ModuleContext& context) {
   step(context);
 }
 
-void ReconfigureProgram::onMotionDone(program::ModuleContext& context) {
+void ReconfigureProgram::onMotionEnded(Context& context, const MotionEnded& ended) {
+  if (!ended.arrived) {
+    attemptFailed();
+    retryAfterRelease_ = true;
+    releaseHelpers(context);
+    return;
+  }
   ++motions_;
   leavingFor_.reset();
   failedGoals_.clear();
@@ -198,12 +198,6 @@ void ReconfigureProgram::onMotionDone(program::ModuleContext& context) {
   standingVersion_ = chosenVersion_;
   idleRounds_ = 0;
   retryAfterRelease_ = false;
-  releaseHelpers(context);
-}
-
-void ReconfigureProgram::onMotionRefused(program::ModuleContext& context, const MoveRefusal&) {
-  attemptFailed();
-  retryAfterRelease_ = true;
   releaseHelpers(context);
 }
 

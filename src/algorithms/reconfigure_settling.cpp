@@ -10,7 +10,7 @@ using geometry::Cell;
 
 // ---- Settling -------------------------------------------------------------------------------
 
-void ReconfigureProgram::confirm(program::ModuleContext& context) {
+void ReconfigureProgram::confirm(Context& context) {
   // The cells that must be filled before this one: a mover passing through one of them looks
   // the same as a module that stays, to the senses; only it can say which it is.
   uint16_t ask = 0;
@@ -46,7 +46,7 @@ void ReconfigureProgram::confirm(program::ModuleContext& context) {
   watch(context);
 }
 
-void ReconfigureProgram::settle(program::ModuleContext& context) {
+void ReconfigureProgram::settle(Context& context) {
   settled_ = true;
   phase_ = Phase::kIdle;
   context.setColor(kSettled);
@@ -66,7 +66,7 @@ constexpr std::array<int, 4> kSameLayer = {0, 1, 6, 7};
 constexpr int kPocketAttempts = 4;
 }  // namespace
 
-void ReconfigureProgram::repairPocket(program::ModuleContext& context) {
+void ReconfigureProgram::repairPocket(Context& context) {
   // A pocket: an open target cell next to this one whose neighbours on its layer are all
   // occupied. No mover can come into it (docs/reconfiguration.md); a module around it moves in
   // and leaves its own cell empty instead: one with an empty cell beside itself leaves a hole
@@ -87,9 +87,8 @@ void ReconfigureProgram::repairPocket(program::ModuleContext& context) {
       if (wall != context.cell() && !context.occupied(wall).value_or(false)) enclosed = false;
     }
     if (!enclosed) continue;
-    for (const motion::Evaluation& evaluation : context.motions()) {
-      const auto* motion = std::get_if<motion::Motion>(&evaluation);
-      if (!motion || motion->goal != pocket) continue;
+    for (const Motion& motion : context.motions()) {
+      if (motion.goal != pocket) continue;
       settled_ = false;
       leavingFor_ = pocket;
       pocketAttempts_ = 0;
@@ -101,14 +100,13 @@ void ReconfigureProgram::repairPocket(program::ModuleContext& context) {
   }
 }
 
-void ReconfigureProgram::stepIntoPocket(program::ModuleContext& context) {
+void ReconfigureProgram::stepIntoPocket(Context& context) {
   const Cell pocket = *leavingFor_;
   candidates_.clear();
   if (pocketAttempts_++ < kPocketAttempts && isOpen(context, pocket)) {
-    for (motion::Evaluation& evaluation : context.motions()) {
-      auto* motion = std::get_if<motion::Motion>(&evaluation);
-      if (motion && motion->goal == pocket) {
-        candidates_.push_back(std::move(*motion));
+    for (Motion& motion : context.motions()) {
+      if (motion.goal == pocket) {
+        candidates_.push_back(std::move(motion));
         break;
       }
     }

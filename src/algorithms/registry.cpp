@@ -37,7 +37,7 @@ class TypedPrograms final : public ProgramSet {
     }
     ids_[slot] = id;
   }
-  program::ModuleProgram* programAt(uint32_t slot) override { return &programs_[slot]; }
+  datomsim::Program* programAt(uint32_t slot) override { return &programs_[slot]; }
   void prefetch(uint32_t far, uint32_t) const override {
     if (far != kNoSlot) __builtin_prefetch(&programs_[far]);
   }
@@ -161,15 +161,16 @@ class TypedPrograms final : public ProgramSet {
   std::vector<ModuleId> ids_;      // by slot
 };
 
-// The programs of a public-API entry: one host runs every module's program (api::ProgramHost),
-// made in increasing id order as the entry's make function may count on.
+// The programs of a public-API entry, kept by slot (api::ProgramHost), made in increasing id order
+// as the entry's make function may count on.
 class EntryPrograms final : public ProgramSet {
  public:
   EntryPrograms(const ProgramEntry& entry, Parameters parameters, size_t moduleCount)
       : host_(entry, std::move(parameters), moduleCount) {}
 
   void make(ModuleId id, uint32_t slot) override { host_.make(id, slot); }
-  program::ModuleProgram* programAt(uint32_t) override { return &host_; }
+  datomsim::Program* programAt(uint32_t slot) override { return host_.program(slot); }
+  const Parameters& parameters() const override { return host_.parameters(); }
   void prefetch(uint32_t far, uint32_t near) const override { host_.prefetch(far, near); }
 
   std::vector<std::pair<geometry::Cell, int>> distances(const ModulesAtEnd&) const override {
@@ -179,7 +180,7 @@ class EntryPrograms final : public ProgramSet {
   std::optional<std::pair<ModuleId, std::string>> failure() const override { return std::nullopt; }
 
   void report(uint32_t slot, Report& report) const override {
-    if (const Program* program = host_.program(slot)) program->report(report);
+    if (const datomsim::Program* program = host_.program(slot)) program->report(report);
   }
 
  private:

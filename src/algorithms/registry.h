@@ -19,7 +19,7 @@
 #include "datomsim/result.h"
 #include "geometry/cell.h"
 #include "geometry/lattice.h"
-#include "program/module_program.h"
+#include "program/program_source.h"
 
 namespace datomsim::algorithms {
 
@@ -72,7 +72,7 @@ struct MobileOutcome {
   std::string wait;                    // what it waited for when the run ended
 };
 
-// The modules of a run at its end, by slot (ModuleContext::slot), as the driver sees them: what a
+// The modules of a run at its end, by slot (Context::slot), as the driver sees them: what a
 // program set needs besides its programs to read their results.
 struct ModulesAtEnd {
   size_t count = 0;

@@ -15,8 +15,8 @@
 #include <cstdint>
 #include <memory>
 
+#include "datomsim/program.h"
 #include "geometry/cell.h"
-#include "program/module_program.h"
 
 namespace datomsim::algorithms {
 
@@ -45,7 +45,7 @@ class Router {
   // connectors latched at the time, so a refusal is a bug of the caller's world: the first one is
   // returned.
   template <typename T>
-  Status send(program::ModuleContext& context, T routed, int arrivedThrough = -1) {
+  Status send(Context& context, T routed, int arrivedThrough = -1) {
     return forward(context, routed, kindOf<T>(), arrivedThrough,
                    [&](int connector, const RoutedMsg& next) {
                      T copy = routed;
@@ -72,8 +72,8 @@ class Router {
   }
 
   template <typename Send>
-  Status forward(program::ModuleContext& context, const RoutedMsg& routed, uint64_t kind,
-                 int arrivedThrough, Send&& sendThrough);
+  Status forward(Context& context, const RoutedMsg& routed, uint64_t kind, int arrivedThrough,
+                 Send&& sendThrough);
 
   // Whether this module met the message before; remembers it if not.
   bool seen(const RoutedMsg& routed, uint64_t kind);

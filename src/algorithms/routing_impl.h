@@ -42,8 +42,8 @@ inline bool Router::seen(const RoutedMsg& routed, uint64_t kind) {
 }
 
 template <typename Send>
-Status Router::forward(program::ModuleContext& context, const RoutedMsg& routed, uint64_t kind,
-                       int arrivedThrough, Send&& sendThrough) {
+Status Router::forward(Context& context, const RoutedMsg& routed, uint64_t kind, int arrivedThrough,
+                       Send&& sendThrough) {
   const uint16_t latched = context.latchedConnectors();
   const int64_t own = squaredDistance4(context.cell(), routed.target);
   if (!routed.flooding()) {

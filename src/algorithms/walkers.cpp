@@ -19,14 +19,14 @@ constexpr int kStubborn = 3;
 
 // How far a motion takes the walker along world x, in half cells (the skew lattice moves x by
 // dx + dz/2).
-int progressX(const motion::Motion& motion) {
+int progressX(const Motion& motion) {
   const geometry::Cell offset = motion.goal - motion.from;
   return 2 * offset.x + offset.z;
 }
 
 }  // namespace
 
-void WalkerProgram::onStart(program::ModuleContext& context) {
+void WalkerProgram::onStart(Context& context) {
   walks_ = context.cell().z > 0;
   if (!walks_) return;
   heading_ = context.id().value % 2 == 1 ? 1 : -1;
@@ -34,7 +34,7 @@ void WalkerProgram::onStart(program::ModuleContext& context) {
   step(context);
 }
 
-void WalkerProgram::step(program::ModuleContext& context) {
+void WalkerProgram::step(Context& context) {
   if (finished()) {
     context.setColor(kDone);
     return;
@@ -47,12 +47,10 @@ void WalkerProgram::step(program::ModuleContext& context) {
     }
     return true;
   };
-  std::vector<motion::Motion> candidates;
-  for (motion::Evaluation& evaluation : context.motions()) {
-    auto* motion = std::get_if<motion::Motion>(&evaluation);
-    if (motion && motion->deformations.empty() && motion->goal.z == context.cell().z &&
-        onFloor(motion->goal)) {
-      candidates.push_back(std::move(*motion));
+  std::vector<Motion> candidates;
+  for (Motion& motion : context.motions()) {
+    if (motion.helpers.empty() && motion.goal.z == context.cell().z && onFloor(motion.goal)) {
+      candidates.push_back(std::move(motion));
     }
   }
   if (candidates.empty()) {
@@ -62,7 +60,7 @@ void WalkerProgram::step(program::ModuleContext& context) {
     return;
   }
   // The best way forward; at the edge, turn back. After repeated refusals, any motion will do.
-  auto forward = [&](const motion::Motion& m) { return heading_ * progressX(m); };
+  auto forward = [&](const Motion& m) { return heading_ * progressX(m); };
   auto best =
       std::max_element(candidates.begin(), candidates.end(),
                        [&](const auto& a, const auto& b) { return forward(a) < forward(b); });
@@ -82,7 +80,7 @@ void WalkerProgram::step(program::ModuleContext& context) {
   }
 }
 
-void WalkerProgram::retryLater(program::ModuleContext& context) {
+void WalkerProgram::retryLater(Context& context) {
   if (refusedInARow_ >= kPatience) {
     failure_ = "gave up after " + std::to_string(kPatience) + " refusals in a row at " +
                geometry::toString(context.cell());
@@ -93,17 +91,17 @@ void WalkerProgram::retryLater(program::ModuleContext& context) {
   context.setTimer(context.random().between(50, 400) * kMillisecond, kRetry);
 }
 
-void WalkerProgram::onTimer(program::ModuleContext& context, int tag) {
+void WalkerProgram::onTimer(Context& context, int tag) {
   if (walks_ && tag == kRetry) step(context);
 }
 
-void WalkerProgram::onMotionDone(program::ModuleContext& context) {
-  ++steps_;
-  refusedInARow_ = 0;
-  step(context);
-}
-
-void WalkerProgram::onMotionRefused(program::ModuleContext& context, const MoveRefusal&) {
+void WalkerProgram::onMotionEnded(Context& context, const MotionEnded& ended) {
+  if (ended.arrived) {
+    ++steps_;
+    refusedInARow_ = 0;
+    step(context);
+    return;
+  }
   ++refusals_;
   ++refusedInARow_;
   retryLater(context);

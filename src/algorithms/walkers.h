@@ -17,20 +17,20 @@
 #include <optional>
 #include <string>
 
-#include "program/module_program.h"
+#include "datomsim/program.h"
 
 namespace datomsim::algorithms {
 
-class WalkerProgram : public program::ModuleProgram {
+class WalkerProgram : public Program {
  public:
   static constexpr int kSteps = 10;
   // Refusals in a row after which a walker gives up (two walkers stuck face to face).
   static constexpr int kPatience = 100;
 
-  void onStart(program::ModuleContext& context) override;
-  void onTimer(program::ModuleContext& context, int tag) override;
-  void onMotionDone(program::ModuleContext& context) override;
-  void onMotionRefused(program::ModuleContext& context, const MoveRefusal& refusal) override;
+  void onStart(Context& context) override;
+  void onTimer(Context& context, int tag) override;
+  // Arrived: the next step; refused when its turn came in the run's queue: another try later.
+  void onMotionEnded(Context& context, const MotionEnded& ended) override;
 
   bool walks() const { return walks_; }
   int steps() const { return steps_; }
@@ -40,8 +40,8 @@ class WalkerProgram : public program::ModuleProgram {
   const std::optional<std::string>& failure() const { return failure_; }
 
  private:
-  void step(program::ModuleContext& context);
-  void retryLater(program::ModuleContext& context);
+  void step(Context& context);
+  void retryLater(Context& context);
 
   bool walks_ = false;
   int heading_ = 1;  // +1: towards +x, -1: towards -x

@@ -1,8 +1,8 @@
 // The values of motion evaluation: options, a valid motion with its deformation list, a refusal
 // with its reason, and the evaluation that is one or the other.
 //
-// Values only (no world): a module program receives and sends them (program/module_program.h)
-// without seeing the world. motion/motion.h evaluates rules against a world to make them.
+// Values only (no world). motion/motion.h evaluates rules against a world to make them; programs
+// see them as the public datomsim::Motion (sim/public_motion.h converts).
 #pragma once
 
 #include <cstdint>

@@ -16,10 +16,10 @@
 
 #include "datom/dimensions.h"
 #include "datomsim/result.h"
+#include "datomsim/time.h"
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
 #include "geometry/vec3.h"
-#include "program/module_program.h"
 #include "sim/observer.h"
 #include "world/module_kind.h"
 #include "world/world.h"

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "datomsim/message.h"
-#include "program/module_program.h"
+#include "datomsim/time.h"
 
 namespace datomsim::sim {
 

@@ -123,7 +123,7 @@ class Observer {
   virtual void modulePlaced(Time /*t*/, const world::Module& /*module*/) {}
   virtual void motionEnded(Time /*t*/, const MotionEnd& /*end*/) {}
   virtual void colorChanged(Time /*t*/, ModuleId /*module*/, Color /*color*/) {}
-  // A program wrote a line for the trace (ModuleContext::log).
+  // A program wrote a line for the trace (Context::log).
   virtual void programLog(Time /*t*/, ModuleId /*module*/, std::string_view /*text*/) {}
 };
 

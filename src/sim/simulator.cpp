@@ -8,6 +8,7 @@
 #include "catom3d/catom_rolls.h"
 #include "geometry/lattice.h"
 #include "sim/invariants.h"
+#include "sim/simulator_context.h"
 
 namespace datomsim::sim {
 
@@ -42,84 +43,6 @@ std::string Violation::describe() const {
                      double(time) / kSecond, sequence, toString(kind), module.value, what);
 }
 
-// The window a program has on the simulation: every call goes through the part that owns what
-// it changes, with that part's checks.
-class Simulator::Context final : public program::ModuleContext {
- public:
-  Context(Simulator& simulator, uint32_t index) : simulator_(simulator), index_(index) {}
-
-  ModuleId id() const override { return module().id; }
-  uint32_t slot() const override { return index_; }
-  Cell cell() const override { return module().cell; }
-  Orientation orientation() const override { return module().orientation; }
-  Time now() const override { return simulator_.agenda_.now(); }
-  std::optional<bool> occupied(const Cell& cell) const override {
-    // Beyond two steps (a distance of 2 lattice spacings) a module senses nothing. In whole
-    // numbers: four times the squared length of the offset (dx + dz/2, dy + dz/2, dz/sqrt 2).
-    const Cell d = cell - module().cell;
-    const int64_t x = 2 * int64_t{d.x} + d.z, y = 2 * int64_t{d.y} + d.z, z = d.z;
-    if (x * x + y * y + 2 * z * z > 16) return std::nullopt;
-    return simulator_.world_.moduleAt(cell) != nullptr;
-  }
-  std::optional<uint16_t> occupiedAround(const Cell& cell) const override {
-    if (!geometry::directionOfOffset(cell - module().cell)) return std::nullopt;
-    return simulator_.world_.neighbourMask(cell);
-  }
-  uint16_t latchedConnectors() const override { return module().latches; }
-  Cell cellBehind(int ownConnector) const override {
-    return module().cell +
-           geometry::neighbourOffset(module().orientation.worldDirection(ownConnector));
-  }
-  Status send(int ownConnector, const Message& message) override {
-    return simulator_.transport_.send(index_, ownConnector, message);
-  }
-  int sendToAll(const Message& message, int exceptConnector) override {
-    return simulator_.transport_.sendToAll(index_, exceptConnector, message);
-  }
-  Status compress(int ownPiston) override { return simulator_.compress(index_, ownPiston); }
-  Status release() override { return simulator_.release(index_); }
-  int compressedPiston() const override { return simulator_.mechanics_.pistons(index_).piston; }
-  std::vector<motion::Evaluation> motions() const override {
-    return simulator_.model_->programMotions(simulator_.world_, {module().cell, module().id});
-  }
-  std::string motionName(const motion::Motion& motion) const override {
-    return simulator_.model_->name(motion);
-  }
-  int goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,
-                   uint16_t wanted) const override;
-  MoveResult move(const motion::Motion& motion) override {
-    return simulator_.motions_.request(index_, motion);
-  }
-  void setTimer(Time delay, int tag) override {
-    simulator_.agenda_.schedule(now() + std::max<Time>(0, delay), EventKind::kTimer, index_, tag);
-  }
-  Random& random() override { return simulator_.randomOf(index_); }
-  void setColor(Color color) override {
-    simulator_.world_.setColorAt(index_, color);
-    simulator_.announce_(&Observer::colorChanged, now(), id(), color);
-  }
-  void log(std::string_view text) override {
-    simulator_.announce_(&Observer::programLog, now(), id(), text);
-  }
-
- private:
-  const Module& module() const { return simulator_.world_.modules()[index_]; }
-  Simulator& simulator_;
-  uint32_t index_;
-};
-
-// The rules this module would judge as the pivot of a mobile imagined at `mobileCell`.
-int Simulator::Context::goalsAsPivot(const Cell& mobileCell, std::array<Cell, 6>& goals,
-                                     uint16_t wanted) const {
-  const world::World& world = simulator_.world_;
-  const Module& pivot = module();
-  const auto direction = geometry::directionOfOffset(mobileCell - pivot.cell);
-  if (!direction || world.cellState(mobileCell) == world::CellState::kSolid) return 0;
-  const motion::Mobile mobile{mobileCell, simulator_.options_.mobile};
-  if (motion::fixedModuleAt(world, mobileCell, mobile)) return 0;
-  return simulator_.model_->goalsAsPivot(world, pivot.cell, mobile, wanted, goals);
-}
-
 Simulator::Simulator(world::World world, const motion::RuleTable& table, SimulationOptions options)
     : world_(std::move(world)),
       table_(table),
@@ -152,7 +75,7 @@ Simulator::~Simulator() = default;
 size_t Simulator::bytesPerModuleState() {
   // A program pointer (none when one program serves all), the pistons, the motion slot; the
   // random streams only once a program draws.
-  return sizeof(program::ModuleProgram*) + sizeof(Mechanics::Pistons) + sizeof(int16_t);
+  return sizeof(Program*) + sizeof(Mechanics::Pistons) + sizeof(int16_t);
 }
 
 uint32_t Simulator::indexOf(ModuleId id) const {
@@ -184,11 +107,11 @@ class OwnedPrograms final : public program::ProgramSource {
   OwnedPrograms(program::ProgramFactory factory, size_t moduleCount)
       : factory_(std::move(factory)), programs_(moduleCount) {}
   void make(ModuleId id, uint32_t slot) override { programs_[slot] = factory_(id); }
-  program::ModuleProgram* programAt(uint32_t slot) override { return programs_[slot].get(); }
+  Program* programAt(uint32_t slot) override { return programs_[slot].get(); }
 
  private:
   program::ProgramFactory factory_;
-  std::vector<std::unique_ptr<program::ModuleProgram>> programs_;
+  std::vector<std::unique_ptr<Program>> programs_;
 };
 
 }  // namespace
@@ -256,8 +179,8 @@ Status Simulator::run(Time until) {
 
 void Simulator::dispatch(const Event& event) {
   const uint32_t index = event.module;
-  Context context(*this, index);
-  program::ModuleProgram* program = programOf(index);
+  ProgramContext context(*this, index);
+  Program* program = programOf(index);
   switch (event.kind) {
     case EventKind::kStart:
       if (program) program->onStart(context);
@@ -288,12 +211,16 @@ void Simulator::dispatch(const Event& event) {
       const auto arrival = motions_.end(event.argument);
       if (!arrival.ok()) return fail(arrival.error());
       placed_.push_back(arrival->mobile);
-      Context mobile(*this, arrival->mobile);
-      if (auto* moved = programOf(arrival->mobile)) moved->onMotionDone(mobile);
+      ProgramContext mobile(*this, arrival->mobile);
+      if (auto* moved = programOf(arrival->mobile)) {
+        moved->onMotionEnded(mobile, {true, mobile.cell(), std::nullopt});
+      }
       // Queued requests whose turn came and that were refused: their programs hear of it.
       for (const auto& [waiting, refusal] : arrival->refused) {
-        Context refused(*this, waiting);
-        if (auto* queued = programOf(waiting)) queued->onMotionRefused(refused, refusal);
+        ProgramContext refused(*this, waiting);
+        if (auto* queued = programOf(waiting)) {
+          queued->onMotionEnded(refused, {false, refused.cell(), refusal});
+        }
       }
       break;
     }
@@ -308,10 +235,10 @@ void Simulator::tellLatchChanges() {
     for (const auto& [module, connector] :
          {std::pair{pair.a, pair.connectorA}, std::pair{pair.b, pair.connectorB}}) {
       const uint32_t index = indexOf(module);
-      program::ModuleProgram* program = programOf(index);
+      Program* program = programOf(index);
       if (!program) continue;
-      Context context(*this, index);
-      program->onLatchChanged(context, connector, latched);
+      ProgramContext context(*this, index);
+      program->onNeighbourChanged(context, connector, latched);
     }
   }
   latchChanges_.changes.clear();

@@ -8,7 +8,8 @@
 //     and seed: same run, event for event.
 //   - An event is handled by one part: messages by the transport (sim/transport.h), pistons and
 //     latches by the mechanics (sim/mechanics.h), motion phases by the motion executor
-//     (sim/motion_executor.h); then the module's program hears of it.
+//     (sim/motion_executor.h); then the module's program (datomsim::Program) hears of it through
+//     its Context (sim/simulator_context.h).
 //   - After every event the invariants are checked (sim/invariants.h). A violation stops the run
 //     with a report naming the event.
 //   - Every change of state is announced to the subscribed recorders (sim/observer.h).
@@ -20,12 +21,13 @@
 #include <vector>
 
 #include "catom3d/rolling.h"
+#include "datomsim/program.h"
 #include "datomsim/random.h"
 #include "datomsim/result.h"
 #include "motion/motion.h"
 #include "motion/motion_model.h"
 #include "motion/rule_table.h"
-#include "program/module_program.h"
+#include "program/program_source.h"
 #include "sim/event_queue.h"
 #include "sim/mechanics.h"
 #include "sim/motion_executor.h"
@@ -113,7 +115,7 @@ class Simulator {
   static size_t bytesPerModuleState();
 
  private:
-  class Context;
+  class ProgramContext;
 
   // Hands an event to the part that acts on it, then to the module's program.
   void dispatch(const Event& event);
@@ -125,7 +127,7 @@ class Simulator {
   // Stops the run with a violation naming the current event.
   void fail(std::string what);
   uint32_t indexOf(ModuleId id) const;
-  program::ModuleProgram* programOf(uint32_t index) const {
+  Program* programOf(uint32_t index) const {
     return programs_ ? programs_->programAt(index) : nullptr;
   }
   // A module's random stream; the streams are made on the first draw of any module, so that a

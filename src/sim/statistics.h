@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "program/module_program.h"
+#include "datomsim/move_result.h"
 #include "sim/event_queue.h"
 #include "sim/observer.h"
 

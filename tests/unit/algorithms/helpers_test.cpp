@@ -15,13 +15,18 @@ namespace {
 using geometry::Cell;
 
 // A module latched through connector 0 to the cell every message goes to: the router sends each
-// message there, and the context keeps it, with the pistons asked for and the timers set.
-class RecordingContext final : public program::ModuleContext {
+// message there, and the context keeps it, with the pistons asked for and the timers set. Its
+// orientation is 0: own numbers are world numbers.
+class RecordingContext final : public Context {
  public:
   ModuleId id() const override { return ModuleId{7}; }
   uint32_t slot() const override { return 0; }
   Cell cell() const override { return Cell{0, 0, 1}; }
-  geometry::Orientation orientation() const override { return geometry::Orientation(); }
+  int orientation() const override { return 0; }
+  int ownConnector(int worldDirection) const override { return worldDirection; }
+  int worldDirection(int connector) const override { return connector; }
+  int pistonAlong(int worldAxis) const override { return worldAxis; }
+  int worldAxis(int piston) const override { return piston; }
   Time now() const override { return now_; }
   std::optional<bool> occupied(const Cell&) const override { return true; }
   std::optional<uint16_t> occupiedAround(const Cell&) const override { return uint16_t{0}; }
@@ -40,14 +45,16 @@ class RecordingContext final : public program::ModuleContext {
     return Ok{};
   }
   int compressedPiston() const override { return -1; }
-  std::vector<motion::Evaluation> motions() const override { return {}; }
-  std::string motionName(const motion::Motion&) const override { return {}; }
+  std::vector<Motion> motions() const override { return {}; }
+  std::vector<MoveRefusal> refusedMotions() const override { return {}; }
+  std::string describe(const Motion&) const override { return ""; }
   int goalsAsPivot(const Cell&, std::array<Cell, 6>&, uint16_t) const override { return 0; }
-  MoveResult move(const motion::Motion&) override { return MoveResult::started(); }
+  MoveResult move(const Motion&) override { return MoveResult::started(); }
   void setTimer(Time delay, int tag) override { timers.push_back({delay, tag}); }
   Random& random() override { return random_; }
   void setColor(Color) override {}
   void log(std::string_view) override {}
+  const Parameters& parameters() const override { return parameters_; }
 
   static constexpr Cell kNeighbour{1, 0, 1};
   std::vector<std::string> sent;
@@ -67,6 +74,7 @@ class RecordingContext final : public program::ModuleContext {
     return "?";
   }
   Random random_ = Random::stream(1, 7);
+  Parameters parameters_;
 };
 
 RoutedMsg request(uint32_t number, int8_t axis) {
@@ -78,10 +86,10 @@ RoutedMsg request(uint32_t number, int8_t axis) {
   return routed;
 }
 
-motion::Motion motionWithHelpers(int count) {
-  motion::Motion motion;
+Motion motionWithHelpers(int count) {
+  Motion motion;
   for (int i = 0; i < count; ++i) {
-    motion.deformations.push_back({Cell{1, i, 1}, ModuleId{uint32_t(10 + i)}, int8_t(i), -1});
+    motion.helpers.push_back({ModuleId{uint32_t(10 + i)}, Cell{1, i, 1}, i, -1});
   }
   return motion;
 }

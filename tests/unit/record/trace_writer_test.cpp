@@ -36,11 +36,10 @@ TEST(TraceWriter, RecordsAMotionAsTheSimulatorAnnouncesIt) {
   const Cell pivot{5, 5, 5};
   const Cell mobile = pivot + rule.mobileOffset;
   std::map<uint32_t, Script> programs;
-  programs[2].start = [&](program::ModuleContext& c) {
-    for (const motion::Evaluation& e : c.motions()) {
-      const auto* m = std::get_if<motion::Motion>(&e);
-      if (m && m->rule == rule.index) {
-        ASSERT_TRUE(c.move(*m).ok());
+  programs[2].start = [&](Context& c) {
+    for (const Motion& m : c.motions()) {
+      if (m.rule == rule.index) {
+        ASSERT_TRUE(c.move(m).ok());
       }
     }
   };

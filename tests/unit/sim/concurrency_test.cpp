@@ -8,6 +8,7 @@
 
 #include "geometry/lattice.h"
 #include "sim/invariants.h"
+#include "sim/public_motion.h"
 #include "sim/simulator.h"
 #include "support/scripted_program.h"
 #include "support/world_builder.h"
@@ -16,7 +17,6 @@ namespace datomsim::sim {
 namespace {
 
 using geometry::Cell;
-using program::ModuleContext;
 using testing::Script;
 using testing::scripts;
 using testing::WorldBuilder;
@@ -73,10 +73,12 @@ struct Duel {
 
   void run() {
     std::map<uint32_t, Script> programs;
-    programs[firstId].start = [&](ModuleContext& c) { ASSERT_TRUE(c.move(first).ok()); };
-    programs[secondId].start = [&](ModuleContext& c) { c.setTimer(secondAt, 0); };
-    programs[secondId].timer = [&](ModuleContext& c, int) { secondResult = c.move(second); };
-    programs[secondId].refused = [&](ModuleContext&, const MoveRefusal& r) { laterRefusal = r; };
+    programs[firstId].start = [&](Context& c) { ASSERT_TRUE(c.move(sim::toPublic(first)).ok()); };
+    programs[secondId].start = [&](Context& c) { c.setTimer(secondAt, 0); };
+    programs[secondId].timer = [&](Context& c, int) {
+      secondResult = c.move(sim::toPublic(second));
+    };
+    programs[secondId].refused = [&](Context&, const MoveRefusal& r) { laterRefusal = r; };
     Simulator simulator(world, table(), options);
     simulator.subscribe(&recorder);
     simulator.install(scripts(programs));
@@ -246,7 +248,7 @@ TEST(Concurrency, WithConnectivityOnAMotionThatCutsAModuleOffIsRefusedNamingIt) 
     duel.options.connectivity = connectivity;
     std::map<uint32_t, Script> programs;
     std::optional<MoveResult> result;
-    programs[37].start = [&](ModuleContext& c) { result = c.move(duel.first); };
+    programs[37].start = [&](Context& c) { result = c.move(sim::toPublic(duel.first)); };
     Simulator simulator(duel.world, table(), duel.options);
     simulator.install(scripts(programs));
     simulator.startAll();
@@ -270,9 +272,9 @@ TEST(Concurrency, WithConnectivityOnACompressionThatCutsAModuleOffIsRefused) {
   options.connectivity = true;
   std::map<uint32_t, Script> programs;
   std::optional<Status> upward, sideways;
-  programs[37].start = [&](ModuleContext& c) {
-    upward = c.compress(c.orientation().ownPiston(4));
-    sideways = c.compress(c.orientation().ownPiston(3));
+  programs[37].start = [&](Context& c) {
+    upward = c.compress(c.pistonAlong(4));
+    sideways = c.compress(c.pistonAlong(3));
   };
   Simulator simulator(floorWith({{2, 2, 1}, {2, 2, 2}}), table(), options);
   simulator.install(scripts(programs));

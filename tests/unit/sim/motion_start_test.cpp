@@ -1,9 +1,12 @@
 // A motion is judged again when it starts, after its helpers compressed their pistons: judged as
-// when it was chosen, not on the latches those compressions let go.
+// when it was chosen, not on the latches those compressions let go. The program's motion, listed
+// before, is taken back by its rule and helpers, not listed again (a fresh list refuses it).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include "geometry/lattice.h"
 #include "scene/random_scene.h"
@@ -13,7 +16,6 @@
 namespace datomsim::sim {
 namespace {
 
-using program::ModuleContext;
 using testing::Script;
 using testing::scripts;
 
@@ -41,23 +43,40 @@ TEST(MotionStart, IsJudgedAsBeforeItsHelpersDeformed) {
   ASSERT_EQ(chosen->deformations[0].firstAxis, 1);
   ASSERT_EQ(chosen->deformations[0].secondAxis, 5);
 
+  // The helpers compress a moment after the start, once the mobile has listed its motions.
   std::map<uint32_t, Script> programs;
   for (const motion::Deformation& helper : chosen->deformations) {
-    programs[helper.module.value].start = [axis = helper.firstAxis](ModuleContext& c) {
-      ASSERT_TRUE(c.compress(c.orientation().ownPiston(axis)).ok());
+    programs[helper.module.value].start = [](Context& c) { c.setTimer(kMillisecond, 0); };
+    programs[helper.module.value].timer = [axis = helper.firstAxis](Context& c, int) {
+      ASSERT_TRUE(c.compress(c.pistonAlong(axis)).ok());
     };
   }
+  const auto isChosen = [](const Motion& m) { return m.rule == 24 && m.pivot == ModuleId{20}; };
+  std::optional<Motion> listed;
+  bool listedAgain = true;
   std::optional<MoveResult> asked;
   bool arrived = false;
-  programs[32].start = [](ModuleContext& c) { c.setTimer(600 * kMillisecond, 0); };
-  programs[32].timer = [&](ModuleContext& c, int) { asked = c.move(*chosen); };
-  programs[32].moved = [&](ModuleContext&) { arrived = true; };
+  programs[32].start = [&](Context& c) {
+    for (const Motion& m : c.motions()) {
+      if (isChosen(m)) listed = m;
+    }
+    c.setTimer(600 * kMillisecond, 0);
+  };
+  programs[32].timer = [&](Context& c, int) {
+    const std::vector<Motion> fresh = c.motions();
+    listedAgain = std::any_of(fresh.begin(), fresh.end(), isChosen);
+    ASSERT_TRUE(listed.has_value());
+    EXPECT_EQ(listed->helpers.size(), 2u);
+    asked = c.move(*listed);
+  };
+  programs[32].moved = [&](Context&) { arrived = true; };
   Simulator simulator(std::move(*world), table, {});
   simulator.install(scripts(programs));
   simulator.startAll();
   const Status run = simulator.run();
 
   ASSERT_TRUE(run.ok()) << run.error();  // every invariant held at every event
+  EXPECT_FALSE(listedAgain);             // what the simulator must not do: judge on a fresh list
   ASSERT_TRUE(asked.has_value());
   EXPECT_EQ(asked->state(), MoveResult::State::kStarted) << asked->error();
   EXPECT_TRUE(arrived);

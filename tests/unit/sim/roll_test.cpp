@@ -13,7 +13,6 @@ namespace datomsim::sim {
 namespace {
 
 using geometry::Cell;
-using program::ModuleContext;
 using testing::Script;
 using testing::scripts;
 using testing::WorldBuilder;
@@ -33,10 +32,9 @@ SimulationOptions catoms() {
 const Cell kP{3, 3, 3}, kM{4, 3, 3}, kD{3, 3, 4};
 
 // The roll of the module at M to D through `face`, asked at its start.
-std::optional<MoveResult> rollTo(ModuleContext& c, const Cell& goal, catom3d::Face face) {
-  for (const motion::Evaluation& e : c.motions()) {
-    const auto* m = std::get_if<motion::Motion>(&e);
-    if (m && m->goal == goal && catom3d::faceOf(m->rule) == face) return c.move(*m);
+std::optional<MoveResult> rollTo(Context& c, const Cell& goal, catom3d::Face face) {
+  for (const Motion& m : c.motions()) {
+    if (m.goal == goal && catom3d::faceOf(m.rule) == face) return c.move(m);
   }
   return std::nullopt;
 }
@@ -46,11 +44,11 @@ TEST(Roll, ACatomListsItsRollsAsMotionsAndLandsHeldByItsPivot) {
   std::optional<MoveResult> started;
   size_t listed = 0;
   Time arrived = -1;
-  programs[2].start = [&](ModuleContext& c) {
+  programs[2].start = [&](Context& c) {
     listed = c.motions().size();
     started = rollTo(c, kD, catom3d::Face::kHexagonal);
   };
-  programs[2].moved = [&](ModuleContext& c) { arrived = c.now(); };
+  programs[2].moved = [&](Context& c) { arrived = c.now(); };
   Simulator simulator(WorldBuilder().module(kP).module(kM).build(), table(), catoms());
   simulator.install(scripts(programs));
   simulator.startAll();
@@ -79,7 +77,7 @@ TEST(Roll, ARollIntoACellBetweenTwoOppositeModulesIsRefusedWithTheReason) {
   std::map<uint32_t, Script> programs;
   std::optional<MoveResult> started;
   size_t listed = 0;
-  programs[2].start = [&](ModuleContext& c) {
+  programs[2].start = [&](Context& c) {
     listed = c.motions().size();
     started = rollTo(c, kD, catom3d::Face::kHexagonal);
   };
@@ -92,7 +90,7 @@ TEST(Roll, ARollIntoACellBetweenTwoOppositeModulesIsRefusedWithTheReason) {
   EXPECT_FALSE(started.has_value());  // not offered: programs see the valid rolls only
   EXPECT_LT(listed, 8u);
   // Asked all the same (a motion kept from before), it is judged again and refused.
-  motion::Motion kept;
+  Motion kept;
   catom3d::RollTable rolls;
   for (const catom3d::Roll& roll :
        rolls.rollsForMobileDirection(*geometry::directionOfOffset(kM - kP))) {
@@ -102,7 +100,7 @@ TEST(Roll, ARollIntoACellBetweenTwoOppositeModulesIsRefusedWithTheReason) {
   kept.goal = kD;
   std::optional<MoveResult> asked;
   std::map<uint32_t, Script> again;
-  again[2].start = [&](ModuleContext& c) { asked = c.move(kept); };
+  again[2].start = [&](Context& c) { asked = c.move(kept); };
   Simulator second(WorldBuilder().module(kP).module(kM).module({3, 3, 5}).build(), table(),
                    catoms());
   second.install(scripts(again));
@@ -138,16 +136,14 @@ TEST(Roll, TwoRollsIntoOneCellAtOnceTheSecondIsRefusedNamingTheFirst) {
   ASSERT_TRUE(second.has_value());
   std::map<uint32_t, Script> programs;
   std::optional<MoveResult> first, other;
-  programs[2].start = [&](ModuleContext& c) {
-    for (const motion::Evaluation& e : c.motions()) {
-      const auto* m = std::get_if<motion::Motion>(&e);
-      if (m && m->goal == kD && !first) first = c.move(*m);
+  programs[2].start = [&](Context& c) {
+    for (const Motion& m : c.motions()) {
+      if (m.goal == kD && !first) first = c.move(m);
     }
   };
-  programs[4].start = [&](ModuleContext& c) {
-    for (const motion::Evaluation& e : c.motions()) {
-      const auto* m = std::get_if<motion::Motion>(&e);
-      if (m && m->goal == kD && !other) other = c.move(*m);
+  programs[4].start = [&](Context& c) {
+    for (const Motion& m : c.motions()) {
+      if (m.goal == kD && !other) other = c.move(m);
     }
   };
   Simulator simulator(

@@ -2,9 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <functional>
+#include <stdexcept>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #include "geometry/lattice.h"
 #include "support/scripted_program.h"
@@ -14,7 +18,6 @@ namespace datomsim::sim {
 namespace {
 
 using geometry::Cell;
-using program::ModuleContext;
 using testing::Script;
 using testing::scripts;
 using testing::WorldBuilder;
@@ -32,9 +35,9 @@ const motion::RuleTable& table() {
 TEST(Simulator, SendingThroughAnUnlatchedConnectorIsAnError) {
   std::map<uint32_t, Script> programs;
   Status sent = Ok{};
-  programs[1].start = [&](ModuleContext& c) {
+  programs[1].start = [&](Context& c) {
     // Connector facing +y: nothing there.
-    sent = c.send(c.orientation().ownConnector(1), Message::of(Ping{0}));
+    sent = c.send(c.ownConnector(1), Message::of(Ping{0}));
   };
   Simulator simulator(WorldBuilder().modules({{0, 0, 0}, {1, 0, 0}}).build(), table(), {});
   simulator.install(scripts(programs));
@@ -48,10 +51,10 @@ TEST(Simulator, AMessageArrivesAfterTheDelayThroughTheFacingConnector) {
   std::map<uint32_t, Script> programs;
   Time arrival = -1;
   int arrivedThrough = -1;
-  programs[1].start = [](ModuleContext& c) {
-    ASSERT_TRUE(c.send(c.orientation().ownConnector(0), Message::of(Ping{1})).ok());
+  programs[1].start = [](Context& c) {
+    ASSERT_TRUE(c.send(c.ownConnector(0), Message::of(Ping{1})).ok());
   };
-  programs[2].message = [&](ModuleContext& c, int connector, const Message& m) {
+  programs[2].message = [&](Context& c, int connector, const Message& m) {
     ASSERT_NE(m.as<Ping>(), nullptr);
     EXPECT_EQ(m.as<Ping>()->hops, 1);
     arrival = c.now();
@@ -91,7 +94,7 @@ Heard tellNeighbours(bool all, int* sentCount, Time jitter, Announced* announced
   std::map<uint32_t, Script> programs;
   Heard heard;
   const int except = 3;
-  programs[1].start = [&](ModuleContext& c) {
+  programs[1].start = [&](Context& c) {
     if (all) {
       *sentCount = c.sendToAll(Message::of(Ping{1}), except);
       return;
@@ -102,7 +105,7 @@ Heard tellNeighbours(bool all, int* sentCount, Time jitter, Announced* announced
     }
   };
   for (uint32_t id = 2; id <= 8; ++id) {
-    programs[id].message = [&heard](ModuleContext& c, int connector, const Message& m) {
+    programs[id].message = [&heard](Context& c, int connector, const Message& m) {
       heard.emplace_back(c.now(), c.id(), connector, m.as<Ping>()->hops);
     };
   }
@@ -151,10 +154,10 @@ TEST(Simulator, SendingToAllIsTheSameAsOneSendEach) {
 TEST(Simulator, EventsAtTheSameTimeRunInTheOrderTheyWereScheduled) {
   std::map<uint32_t, Script> programs;
   std::vector<int> order;
-  programs[1].start = [](ModuleContext& c) {
+  programs[1].start = [](Context& c) {
     for (int tag = 0; tag < 5; ++tag) c.setTimer(kSecond, tag);
   };
-  programs[1].timer = [&](ModuleContext&, int tag) { order.push_back(tag); };
+  programs[1].timer = [&](Context&, int tag) { order.push_back(tag); };
   Simulator simulator(WorldBuilder().module({0, 0, 0}).build(), table(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
@@ -165,8 +168,8 @@ TEST(Simulator, EventsAtTheSameTimeRunInTheOrderTheyWereScheduled) {
 TEST(Simulator, ASecondPistonIsRefusedWhileOneIsCompressed) {
   std::map<uint32_t, Script> programs;
   Status second = Ok{};
-  programs[1].start = [](ModuleContext& c) { ASSERT_TRUE(c.compress(0).ok()); };
-  programs[1].deformed = [&](ModuleContext& c) { second = c.compress(1); };
+  programs[1].start = [](Context& c) { ASSERT_TRUE(c.compress(0).ok()); };
+  programs[1].deformed = [&](Context& c) { second = c.compress(1); };
   Simulator simulator(WorldBuilder().module({0, 0, 0}).build(), table(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
@@ -187,13 +190,12 @@ TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
   std::map<uint32_t, Script> programs;
   std::optional<MoveResult> started;
   bool done = false;
-  programs[2].start = [&](ModuleContext& c) {
-    for (const motion::Evaluation& e : c.motions()) {
-      const auto* m = std::get_if<motion::Motion>(&e);
-      if (m && m->rule == stage.rule.index) started = c.move(*m);
+  programs[2].start = [&](Context& c) {
+    for (const Motion& m : c.motions()) {
+      if (m.rule == stage.rule.index) started = c.move(m);
     }
   };
-  programs[2].moved = [&](ModuleContext&) { done = true; };
+  programs[2].moved = [&](Context&) { done = true; };
   Simulator simulator(WorldBuilder().module(stage.pivot).module(stage.mobile).build(), table(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
@@ -215,9 +217,11 @@ TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
   const Stage stage;
   std::map<uint32_t, Script> programs;
   std::optional<MoveResult> started;
-  programs[2].start = [&](ModuleContext& c) {
+  std::vector<MoveRefusal> refused;
+  programs[2].start = [&](Context& c) {
+    refused = c.refusedMotions();
     // A motion listed when the goal was free, asked for after the world changed.
-    motion::Motion stale;
+    Motion stale;
     stale.rule = stage.rule.index;
     stale.from = c.cell();
     stale.goal = stage.pivot + stage.rule.goalOffset;
@@ -237,6 +241,11 @@ TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
   EXPECT_EQ(started->refusal().reason, MoveRefusal::Reason::kRule);
   EXPECT_NE(started->error().find("the goal"), std::string::npos) << started->error();
   EXPECT_EQ(simulator.world().find(ModuleId{2})->cell, stage.mobile);
+  // The module could have known: its refused motions name the goal's module.
+  const Cell goal = stage.pivot + stage.rule.goalOffset;
+  EXPECT_TRUE(std::any_of(refused.begin(), refused.end(), [&](const MoveRefusal& r) {
+    return r.reason == MoveRefusal::Reason::kRule && r.cell == goal && r.module == ModuleId{3};
+  }));
 }
 
 // The go-ahead rule with a module in cell C (def(R)) held by a support behind it.
@@ -255,10 +264,9 @@ TEST(Simulator, AMotionWhoseHelperHasNotCompressedIsRefused) {
   ASSERT_EQ(stage.rule.cells[2].role, motion::CellRole::kC);
   std::map<uint32_t, Script> programs;
   std::optional<MoveResult> started;
-  programs[2].start = [&](ModuleContext& c) {
-    for (const motion::Evaluation& e : c.motions()) {
-      const auto* m = std::get_if<motion::Motion>(&e);
-      if (m && m->rule == stage.rule.index) started = c.move(*m);
+  programs[2].start = [&](Context& c) {
+    for (const Motion& m : c.motions()) {
+      if (m.rule == stage.rule.index) started = c.move(m);
     }
   };
   Simulator simulator(stage.build(), table(), {});
@@ -276,17 +284,16 @@ TEST(Simulator, ReleasingAPistonAMotionNeedsIsRefusedNamingTheMotion) {
   std::map<uint32_t, Script> programs;
   // The helper compresses at once and tries to let go half-way through the motion.
   std::optional<Status> released;
-  programs[3].start = [&](ModuleContext& c) {
-    ASSERT_TRUE(c.compress(c.orientation().ownPiston(stage.rule.right)).ok());
+  programs[3].start = [&](Context& c) {
+    ASSERT_TRUE(c.compress(c.pistonAlong(stage.rule.right)).ok());
   };
-  programs[3].deformed = [](ModuleContext& c) { c.setTimer(kSecond, 0); };
-  programs[3].timer = [&](ModuleContext& c, int) { released = c.release(); };
-  programs[2].start = [](ModuleContext& c) { c.setTimer(600 * kMillisecond, 0); };
-  programs[2].timer = [&](ModuleContext& c, int) {
-    for (const motion::Evaluation& e : c.motions()) {
-      const auto* m = std::get_if<motion::Motion>(&e);
-      if (m && m->rule == stage.rule.index) {
-        ASSERT_TRUE(c.move(*m).ok());
+  programs[3].deformed = [](Context& c) { c.setTimer(kSecond, 0); };
+  programs[3].timer = [&](Context& c, int) { released = c.release(); };
+  programs[2].start = [](Context& c) { c.setTimer(600 * kMillisecond, 0); };
+  programs[2].timer = [&](Context& c, int) {
+    for (const Motion& m : c.motions()) {
+      if (m.rule == stage.rule.index) {
+        ASSERT_TRUE(c.move(m).ok());
       }
     }
   };
@@ -302,6 +309,59 @@ TEST(Simulator, ReleasingAPistonAMotionNeedsIsRefusedNamingTheMotion) {
             "module 3: cannot release its piston: the motion of module 2 needs it compressed "
             "(until 2.6 s)");
   EXPECT_EQ(simulator.statistics().motions, 1u);
+}
+
+TEST(Simulator, TheContextTurnsTheModulesNumbersIntoTheWorldsAndBack) {
+  std::map<uint32_t, Script> programs;
+  bool checked = false;
+  programs[1].start = [&](Context& c) {
+    const geometry::Orientation orientation = *geometry::Orientation::fromCode(c.orientation());
+    for (int connector = 0; connector < geometry::kDirectionCount; ++connector) {
+      const int direction = c.worldDirection(connector);
+      EXPECT_EQ(direction, orientation.worldDirection(connector));
+      EXPECT_EQ(c.ownConnector(direction), connector);
+      EXPECT_EQ(c.cellBehind(connector), c.cell() + geometry::neighbourOffset(direction));
+    }
+    for (int piston = 0; piston < geometry::kAxisCount; ++piston) {
+      EXPECT_EQ(c.worldAxis(piston), orientation.worldAxis(piston));
+      EXPECT_EQ(c.pistonAlong(c.worldAxis(piston)), piston);
+    }
+    EXPECT_THROW(c.ownConnector(12), std::out_of_range);
+    EXPECT_THROW(c.pistonAlong(-1), std::out_of_range);
+    EXPECT_FALSE(c.compress(6).ok());
+    EXPECT_EQ(c.slot(), 0u);
+    checked = true;
+  };
+  Simulator simulator(WorldBuilder().module({1, 1, 1}, 17).module({2, 1, 1}).build(), table(), {});
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  ASSERT_TRUE(simulator.run().ok());
+  EXPECT_TRUE(checked);
+}
+
+TEST(Simulator, AMotionIsDescribedOnlyWhenAskedAndAnUnknownRuleIsRefused) {
+  const Stage stage;
+  std::map<uint32_t, Script> programs;
+  std::string described;
+  std::optional<MoveResult> unknown;
+  programs[2].start = [&](Context& c) {
+    for (Motion m : c.motions()) {
+      if (m.rule != stage.rule.index) continue;
+      described = c.describe(m);
+      m.rule = 72;
+      unknown = c.move(m);
+    }
+  };
+  Simulator simulator(WorldBuilder().module(stage.pivot).module(stage.mobile).build(), table(), {});
+  simulator.install(scripts(programs));
+  simulator.startAll();
+  ASSERT_TRUE(simulator.run().ok());
+  EXPECT_EQ(described, "turn " + std::string(motion::toString(stage.rule.turn)) +
+                           " about module 1 at " + toString(stage.pivot) + " to " +
+                           toString(stage.pivot + stage.rule.goalOffset));
+  ASSERT_TRUE(unknown.has_value());
+  EXPECT_EQ(unknown->refusal().reason, MoveRefusal::Reason::kInvalidRequest);
+  EXPECT_EQ(simulator.statistics().motions, 0u);
 }
 
 }  // namespace

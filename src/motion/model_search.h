@@ -54,7 +54,10 @@ Result<DistanceMap> reachOver(const Model& model, const world::World& fixedWorld
   uint64_t evaluations = 0;
   // Breadth first: the map's cells in order are the queue, in order of distance.
   for (size_t next = 0; next < map.inOrder().size(); ++next) {
-    const auto [cell, distance] = map.inOrder()[next];
+    // Copies, not a structured binding: the map grows while the cell is read (its list may move),
+    // and Clang before 16 does not let a lambda capture a binding.
+    const geometry::Cell cell = map.inOrder()[next].first;
+    const int distance = map.inOrder()[next].second;
     model.forEachCellOneMotionAway(
         fixedWorld, cell, [&](const geometry::Cell& c) { return map.contains(c); },
         [&](const geometry::Cell& c) { map.addNew(c, distance + 1); }, evaluations);

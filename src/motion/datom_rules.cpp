@@ -20,13 +20,7 @@ std::variant<Motion, MoveRefusal> DatomRules::judge(const world::World& world, i
                                                     Compressions compressions) const {
   Evaluation judged = evaluate(world, table_.rule(rule), mobile, options_, compressions);
   if (auto* motion = std::get_if<Motion>(&judged)) return std::move(*motion);
-  const Refusal& refusal = std::get<Refusal>(judged);
-  MoveRefusal refused;
-  refused.reason = MoveRefusal::Reason::kRule;
-  refused.text = motion::describe(refusal);
-  refused.cell = refusal.cell;
-  refused.module = refusal.blocker;
-  return refused;
+  return asMoveRefusal(std::get<Refusal>(judged));
 }
 
 int DatomRules::goalsAsPivot(const world::World& world, const Cell& pivotCell, const Mobile& mobile,

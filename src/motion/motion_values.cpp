@@ -36,6 +36,16 @@ std::string_view toString(RefusalReason reason) {
   return "?";
 }
 
+MoveRefusal asMoveRefusal(const Refusal& refusal) {
+  MoveRefusal out;
+  out.reason = MoveRefusal::Reason::kRule;
+  out.text = describe(refusal);
+  out.cell = refusal.cell;
+  out.module = refusal.blocker;
+  out.cutOff = refusal.cutOff;
+  return out;
+}
+
 std::string describeCutOff(std::span<const ModuleId> modules) {
   constexpr size_t kNamed = 8;
   std::string names;

@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "datomsim/move_result.h"
 #include "datomsim/values.h"
 #include "geometry/cell.h"
 #include "motion/rule_table.h"
@@ -92,6 +93,9 @@ struct Refusal {
 // cell C 4,5,2 holds module 30, which would let go: it is latched only through connectors that
 // piston 2 moves".
 std::string describe(const Refusal& refusal);
+// The refusal as the public value a program and the executor hand on: reason kRule, the sentence,
+// the cell at fault, the module in it and the modules that would be cut off.
+MoveRefusal asMoveRefusal(const Refusal& refusal);
 // "modules 4, 9 would be cut off from the rest" (the first 8 named, then how many more).
 std::string describeCutOff(std::span<const ModuleId> modules);
 

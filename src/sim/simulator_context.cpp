@@ -93,13 +93,7 @@ std::vector<MoveRefusal> Simulator::ProgramContext::refusedMotions() const {
   for (const motion::Evaluation& evaluation :
        simulator_.model_->programMotions(simulator_.world_, {module().cell, module().id})) {
     if (const auto* refused = std::get_if<motion::Refusal>(&evaluation)) {
-      MoveRefusal refusal;
-      refusal.reason = MoveRefusal::Reason::kRule;
-      refusal.cell = refused->cell;
-      refusal.module = refused->blocker;
-      refusal.cutOff = refused->cutOff;
-      refusal.text = motion::describe(*refused);
-      out.push_back(std::move(refusal));
+      out.push_back(motion::asMoveRefusal(*refused));
     }
   }
   return out;

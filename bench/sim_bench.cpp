@@ -21,6 +21,7 @@ void gradientOnBox(benchmark::State& state) {
   const world::World world = *scene::box({side, side, 2});
   const motion::RuleTable table;
   experiment::RunRequest request;
+  request.program = "gradient";
   request.goal = {side / 2, side / 2, 2};
   uint64_t events = 0, messages = 0;
   double runSeconds = 0;
@@ -56,7 +57,7 @@ void reshapePyramid(benchmark::State& state) {
   const scene::ReshapeCase reshape = *scene::cornerToPyramid(int(state.range(0)));
   const motion::RuleTable table;
   experiment::RunRequest request;
-  request.program = std::string(algorithms::kReconfigure);
+  request.program = "reconfigure";
   request.targets = {reshape.target};
   request.simulation.connectivity = true;
   request.simulation.rules.connectivity = true;

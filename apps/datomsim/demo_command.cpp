@@ -76,10 +76,8 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
                      .svg = (folder / (name + "-distances.svg")).string()},
                     reporter);
       writeOutput((folder / (name + "-trace.jsonl")).string(), result.run.trace, reporter);
-      writeOutput(
-          (folder / (name + "-run.json")).string(),
-          frontend::runJson(*algorithms::programInfo(algorithms::kFollowGradient), result.run),
-          reporter);
+      writeOutput((folder / (name + "-run.json")).string(),
+                  frontend::runJson(experiment::kPaperProgram, result.run), reporter);
       if (bundle.ok()) {
         const exporting::ViewerPage page = {
             title, result.run.trace,
@@ -98,7 +96,7 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
       entry["path"] = cellsJson(result.path);
       entry["passes_under_arch"] = result.passesUnderArch;
       entry["highest_path_layer"] = result.highestPathLayer;
-      entry["simulated_path_matches"] = result.run.path == result.path;
+      entry["simulated_path_matches"] = result.run.report.cells("path") == result.path;
       entry["events"] = result.run.statistics.events();
       entry["messages"] = result.run.statistics.messages();
       entry["sim_time_s"] = double(result.run.statistics.simulatedTime) / kSecond;
@@ -111,7 +109,7 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
     // same run one motion at a time for comparison.
     scene::ReshapeCase build = unwrap(scene::archFromLayer(2));
     experiment::RunRequest request;
-    request.program = std::string(algorithms::kReconfigure);
+    request.program = "reconfigure";
     request.targets = {build.target};
     request.simulation.connectivity = true;
     request.simulation.rules.connectivity = true;
@@ -124,8 +122,7 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
         unwrap(experiment::runProgram(std::move(build.world), table, request));
     writeOutput((folder / "arch-build-trace.jsonl").string(), built.trace, reporter);
     writeOutput((folder / "arch-build-run.json").string(),
-                frontend::runJson(*algorithms::programInfo(algorithms::kReconfigure), built),
-                reporter);
+                frontend::runJson(request.program, built), reporter);
     if (bundle.ok()) {
       check(exporting::writeViewerPage(folder / "arch-build-viewer.html", *bundle,
                                        {request.description, built.trace, ""}));

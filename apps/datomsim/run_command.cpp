@@ -50,9 +50,9 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
   command->add_option("scene", args->scene, "Scene file (.xml or .json)")->required();
   std::vector<std::string> names;
   std::string summaries;
-  for (const algorithms::ProgramInfo& info : algorithms::programs(added)) {
-    names.emplace_back(info.name);
-    summaries += fmt::format("{}{}: {}", summaries.empty() ? "" : "; ", info.name, info.summary);
+  for (const algorithms::ProgramKind& kind : algorithms::programs(added)) {
+    names.emplace_back(kind.name);
+    summaries += fmt::format("{}{}: {}", summaries.empty() ? "" : "; ", kind.name, kind.summary);
   }
   command->add_option("--program", args->program, summaries)
       ->required()
@@ -127,9 +127,7 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
     if (!args->trace.empty()) writeOutput(args->trace, run.result.trace, reporter);
     writeOutput(
         args->out,
-        [&](std::FILE* file) {
-          return frontend::writeRunJson(run.info, run.result, run.parameters, file);
-        },
+        [&](std::FILE* file) { return frontend::writeRunJson(run.kind.name, run.result, file); },
         reporter);
     if (args->stats) printStatistics(run.result.statistics);
     if (run.failure) throw UsageError(*run.failure);

@@ -162,8 +162,7 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
   frontend::RunOutput output = frontend::runOnScene(scene.scene(), sceneName, args);
   std::optional<std::string> trace;
   if (args.wantTrace) trace = std::move(output.result.trace);
-  return {frontend::runJson(output.info, output.result, output.parameters), std::move(trace),
-          output.failure};
+  return {frontend::runJson(output.kind.name, output.result), std::move(trace), output.failure};
 }
 
 // The JSON text of `geometry --json`; a fraction outside 0..1 refused as the option is.

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "algorithms/programs_by_slot.h"
 #include "geometry/lattice.h"
 
 namespace datomsim::algorithms {
@@ -172,6 +173,62 @@ std::string FollowGradientProgram::describeWait() const {
 void FollowGradientProgram::fail(const std::string& why) {
   if (walk_) walk_->phase = Phase::kDone;
   recordFailure(why);
+}
+
+namespace {
+
+class FollowGradientPrograms final : public ProgramsBySlot<FollowGradientProgram> {
+ public:
+  FollowGradientPrograms(const ProgramParameters& given, size_t moduleCount)
+      : parameters_{given.goal.value_or(Cell{}), given.mobile.value_or(ModuleId{})} {
+    fill(moduleCount, parameters_);
+  }
+
+  // A module that gave up, then the mobile: stopped, or still on its way when the run ended.
+  std::optional<std::string> failure() const override {
+    if (auto failed = firstFailure(parameters_.mobile)) return failed;
+    const FollowGradientProgram* mobile = this->mobile();
+    if (!mobile) return "the mobile was never made";
+    if (auto stopped = mobile->failure()) return "the mobile stopped: " + *stopped;
+    if (!mobile->arrived()) {
+      return fmt::format("the mobile did not reach the goal {}: {}", toString(parameters_.goal),
+                         mobile->describeWait());
+    }
+    return std::nullopt;
+  }
+
+  // The mobile's cells from the start to where it stopped, and whether it reached the goal.
+  void report(const RunEnd&, RunReport& out) const override {
+    const FollowGradientProgram* mobile = this->mobile();
+    out.add("path", mobile ? mobile->path() : std::vector<Cell>{});
+    out.add("arrived", mobile && mobile->arrived() && !mobile->failure());
+  }
+
+ private:
+  const FollowGradientProgram* mobile() const {
+    for (size_t slot = 0; slot < programs_.size(); ++slot) {
+      if (ids_[slot] == parameters_.mobile) return &programs_[slot];
+    }
+    return nullptr;
+  }
+
+  GradientParameters parameters_;
+};
+
+}  // namespace
+
+const ProgramKind& followGradientKind() {
+  static const ProgramKind kind{
+      .name = "follow-gradient",
+      .summary = "the gradient, then the mobile follows it from the start (Algorithm 1)",
+      .needsGoal = true,
+      .needsStart = true,
+      .mobileTrigger = FollowGradientProgram::kFollowTrigger,
+      .make = [](const ProgramParameters& parameters,
+                 size_t moduleCount) -> std::unique_ptr<ProgramSet> {
+        return std::make_unique<FollowGradientPrograms>(parameters, moduleCount);
+      }};
+  return kind;
 }
 
 }  // namespace datomsim::algorithms

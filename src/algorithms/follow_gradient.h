@@ -33,6 +33,10 @@ struct DistanceReply {
   int32_t distance;
 };
 
+struct ProgramKind;
+// The program's kind, for the registry (program_kind.h).
+const ProgramKind& followGradientKind();
+
 class FollowGradientProgram : public GradientProgram {
  public:
   static constexpr int kFollowTrigger = 1;

@@ -1,5 +1,8 @@
 #include "algorithms/gradient.h"
 
+#include <algorithm>
+
+#include "algorithms/programs_by_slot.h"
 #include "geometry/lattice.h"
 
 namespace datomsim::algorithms {
@@ -148,6 +151,83 @@ void GradientProgram::learn(Context& context, int direction, int32_t distance) {
       }
     }
   }
+}
+
+namespace {
+
+class GradientPrograms final : public ProgramsBySlot<GradientProgram> {
+ public:
+  GradientPrograms(const ProgramParameters& given, size_t moduleCount)
+      : parameters_{given.goal.value_or(Cell{}), given.mobile.value_or(ModuleId{})} {
+    fill(moduleCount, parameters_);
+  }
+
+  std::optional<std::string> failure() const override { return firstFailure(parameters_.mobile); }
+
+  // Every cell a module stores a distance for, with the smallest one stored (they agree), sorted
+  // by x, then y, then z: exactly as `reach` writes its map.
+  void report(const RunEnd& end, RunReport& out) const override {
+    out.add("distances", distances(end.modules));
+  }
+
+ private:
+  RunReport::CellInts distances(const ModulesAtEnd& modules) const;
+
+  GradientParameters parameters_;
+};
+
+RunReport::CellInts GradientPrograms::distances(const ModulesAtEnd& modules) const {
+  // Each cell once, from the first module around it (in direction order from the cell) that
+  // stores a distance for it, with the smallest that any of them stores: no table of every
+  // module's copies, which would hold each cell about four times.
+  RunReport::CellInts out;
+  ModulesAtEnd::Slots slots;
+  for (uint32_t slot = 0; slot < programs_.size(); ++slot) {
+    if (ids_[slot] == parameters_.mobile) continue;
+    const Cell self = modules.cellOf(slot);
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      const int32_t mine = programs_[slot].distanceTowards(d);
+      if (mine == GradientProgram::kUnknown) continue;
+      const Cell cell = self + geometry::neighbourOffset(d);
+      const int towardsSelf = geometry::oppositeDirection(d);
+      const uint16_t around = modules.around(cell, slots);
+      int smallest = GradientProgram::kUnknown;
+      bool first = true;
+      for (int e = 0; e < geometry::kDirectionCount; ++e) {
+        if (!(around & (1u << e))) continue;
+        int32_t stored = mine;
+        if (e != towardsSelf) {
+          const uint32_t other = slots[size_t(e)];
+          stored = ids_[other] == parameters_.mobile
+                       ? GradientProgram::kUnknown
+                       : programs_[other].distanceTowards(geometry::oppositeDirection(e));
+        }
+        if (stored == GradientProgram::kUnknown) continue;
+        if (smallest == GradientProgram::kUnknown && e != towardsSelf) {
+          first = false;
+          break;
+        }
+        smallest = std::min(smallest, stored);
+      }
+      if (first) out.push_back({cell, smallest});
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+const ProgramKind& gradientKind() {
+  static const ProgramKind kind{
+      .name = "gradient",
+      .summary = "the distributed gradient: every cell's distance to the goal",
+      .needsGoal = true,
+      .make = [](const ProgramParameters& parameters,
+                 size_t moduleCount) -> std::unique_ptr<ProgramSet> {
+        return std::make_unique<GradientPrograms>(parameters, moduleCount);
+      }};
+  return kind;
 }
 
 }  // namespace datomsim::algorithms

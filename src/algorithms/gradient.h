@@ -49,6 +49,10 @@ struct GradientParameters {
   ModuleId mobile;
 };
 
+struct ProgramKind;
+// The program's kind, for the registry (program_kind.h).
+const ProgramKind& gradientKind();
+
 class GradientProgram : public Program {
  public:
   static constexpr int32_t kUnknown = INT32_MAX;

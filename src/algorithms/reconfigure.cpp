@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "algorithms/programs_by_slot.h"
 #include "geometry/lattice.h"
 
 namespace datomsim::algorithms {
@@ -150,6 +151,49 @@ std::string ReconfigureProgram::describeState() const {
       return fmt::format("waiting for {} helpers to let go", helpers_.waiting());
   }
   return "?";
+}
+
+namespace {
+
+class ReconfigurePrograms final : public ProgramsBySlot<ReconfigureProgram> {
+ public:
+  ReconfigurePrograms(const ProgramParameters& parameters, size_t moduleCount)
+      : target_(parameters.target) {
+    fill(moduleCount, target_);
+  }
+
+  std::optional<std::string> failure() const override { return firstFailure(); }
+  // The run's driver reports the shape built (experiment/reshape.h); the modules add nothing.
+  void report(const RunEnd&, RunReport&) const override {}
+
+  std::vector<ModuleState> unfinished() const override {
+    std::vector<ModuleState> out;
+    for (size_t slot = 0; slot < programs_.size(); ++slot) {
+      if (!programs_[slot].settled()) out.push_back({ids_[slot], programs_[slot].describeState()});
+    }
+    std::sort(out.begin(), out.end(),
+              [](const ModuleState& a, const ModuleState& b) { return a.id < b.id; });
+    return out;
+  }
+
+ private:
+  std::shared_ptr<const TargetShape> target_;
+};
+
+}  // namespace
+
+const ProgramKind& reconfigureKind() {
+  static const ProgramKind kind{
+      .name = "reconfigure",
+      .summary =
+          "the ensemble reshapes itself into the scene's target, many modules moving at once",
+      .needsTarget = true,
+      .ending = ProgramKind::Ending::kTargetBuilt,
+      .make = [](const ProgramParameters& parameters,
+                 size_t moduleCount) -> std::unique_ptr<ProgramSet> {
+        return std::make_unique<ReconfigurePrograms>(parameters, moduleCount);
+      }};
+  return kind;
 }
 
 }  // namespace datomsim::algorithms

@@ -90,6 +90,10 @@ struct SettledReply {
   bool settled;
 };
 
+struct ProgramKind;
+// The program's kind, for the registry (program_kind.h).
+const ProgramKind& reconfigureKind();
+
 class ReconfigureProgram : public Program {
  public:
   static constexpr int32_t kUnknown = INT32_MAX;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/programs_by_slot.h"
 #include "geometry/lattice.h"
 
 namespace datomsim::algorithms {
@@ -105,6 +106,53 @@ void WalkerProgram::onMotionEnded(Context& context, const MotionEnded& ended) {
   ++refusals_;
   ++refusedInARow_;
   retryLater(context);
+}
+
+namespace {
+
+class WalkerPrograms final : public ProgramsBySlot<WalkerProgram> {
+ public:
+  WalkerPrograms(const ProgramParameters&, size_t moduleCount) { fill(moduleCount); }
+
+  // A walker that gave up, hemmed in, is an outcome of the walk (report), not a failed run.
+  std::optional<std::string> failure() const override { return std::nullopt; }
+
+  // How each walker fared, by increasing id.
+  void report(const RunEnd&, RunReport& out) const override {
+    std::vector<std::pair<ModuleId, RunReport::Record>> walkers;
+    for (size_t slot = 0; slot < programs_.size(); ++slot) {
+      const WalkerProgram& walker = programs_[slot];
+      if (!walker.walks()) continue;
+      RunReport::Scalar failure;
+      if (walker.failure()) failure = *walker.failure();
+      walkers.push_back({ids_[slot],
+                         {{"id", int64_t(ids_[slot].value)},
+                          {"steps", int64_t(walker.steps())},
+                          {"refusals", int64_t(walker.refusals())},
+                          {"finished", walker.finished()},
+                          {"failure", std::move(failure)}}});
+    }
+    std::sort(walkers.begin(), walkers.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<RunReport::Record> records;
+    for (auto& walker : walkers) records.push_back(std::move(walker.second));
+    out.add("walkers", std::move(records));
+  }
+};
+
+}  // namespace
+
+const ProgramKind& walkersKind() {
+  static const ProgramKind kind{
+      .name = "walkers",
+      .summary =
+          "every module above the ground layer walks to and fro over the floor, all at "
+          "once (a test of concurrent motions)",
+      .make = [](const ProgramParameters& parameters,
+                 size_t moduleCount) -> std::unique_ptr<ProgramSet> {
+        return std::make_unique<WalkerPrograms>(parameters, moduleCount);
+      }};
+  return kind;
 }
 
 }  // namespace datomsim::algorithms

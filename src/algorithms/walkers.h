@@ -21,6 +21,10 @@
 
 namespace datomsim::algorithms {
 
+struct ProgramKind;
+// The program's kind, for the registry (program_kind.h).
+const ProgramKind& walkersKind();
+
 class WalkerProgram : public Program {
  public:
   static constexpr int kSteps = 10;

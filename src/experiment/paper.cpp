@@ -35,12 +35,12 @@ Result<PaperScene> runScene(const motion::RuleTable& table, int hole) {
   for (const motion::Motion& m : *walk) result.path.push_back(m.goal);
 
   RunRequest request;
-  request.program = algorithms::kFollowGradient;
+  request.program = kPaperProgram;
   request.goal = scene::kPaperGoal;
   request.start = scene::kPaperStart;
   request.trace = true;
   request.description =
-      fmt::format("{} on the paper's scene, arch hole {} high", algorithms::kFollowGradient, hole);
+      fmt::format("{} on the paper's scene, arch hole {} high", kPaperProgram, hole);
   auto run = runProgram(std::move(*world), table, request);
   if (!run.ok()) return Error{run.error()};
   if (run->failure) return Error{*run->failure};

@@ -3,6 +3,7 @@
 // observations the paper makes about them.
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "datomsim/result.h"
@@ -11,6 +12,9 @@
 #include "world/world.h"
 
 namespace datomsim::experiment {
+
+// The program of the paper's experiment: the gradient, then Algorithm 1.
+inline constexpr std::string_view kPaperProgram = "follow-gradient";
 
 struct PaperScene {
   int holeHeight = 2;

@@ -32,11 +32,11 @@ std::string cellList(const std::vector<Cell>& cells, size_t named = 12) {
 // modules (motion::reach from each missing cell).
 std::vector<Cell> unreachable(const world::World& world, const motion::RuleTable& table,
                               const std::vector<Cell>& missing,
-                              const std::vector<algorithms::MoverState>& movers,
+                              const std::vector<algorithms::ModuleState>& movers,
                               const motion::RuleOptions& rules) {
   world::World settled = world;
   std::vector<Cell> moverCells;
-  for (const algorithms::MoverState& mover : movers) {
+  for (const algorithms::ModuleState& mover : movers) {
     moverCells.push_back(world.find(mover.id)->cell);
     if (!settled.remove(mover.id).ok()) return {};
   }
@@ -84,7 +84,7 @@ ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& 
       filled = now;
       lastFill = simulator.now();
     }
-    const std::vector<algorithms::MoverState> movers = programs.movers();
+    const std::vector<algorithms::ModuleState> movers = programs.unfinished();
     if (horizon - lastFill >= limits.stall || horizon >= limits.timeout) {
       const bool timedOut = horizon >= limits.timeout;
       std::string waits;

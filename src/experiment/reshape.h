@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/registry.h"
+#include "algorithms/program_kind.h"
 #include "geometry/cell.h"
 #include "motion/rule_table.h"
 #include "sim/simulator.h"

@@ -6,7 +6,6 @@
 #include <array>
 #include <string_view>
 
-#include "algorithms/follow_gradient.h"
 #include "algorithms/registry.h"
 #include "record/trace_writer.h"
 
@@ -68,6 +67,12 @@ Status checkCellParameters(const world::World& world, const ProgramEntry& entry,
   return Ok{};
 }
 
+// The ended run, kept for as long as the program's sections read it.
+struct EndedRun {
+  std::shared_ptr<const algorithms::ProgramSet> programs;
+  world::World world;
+};
+
 // The final world as a program set reads it, by slot.
 algorithms::ModulesAtEnd modulesAtEnd(const world::World& world) {
   algorithms::ModulesAtEnd modules;
@@ -76,6 +81,9 @@ algorithms::ModulesAtEnd modulesAtEnd(const world::World& world) {
   static_assert(algorithms::ModulesAtEnd::kNoSlot == world::World::kNoModule);
   modules.around = [&world](const Cell& cell, algorithms::ModulesAtEnd::Slots& slots) {
     return world.neighbourIndices(cell, slots);
+  };
+  modules.forEachInCellOrder = [&world](const std::function<void(uint32_t, const Cell&)>& each) {
+    world.forEachInCellOrder(each);
   };
   return modules;
 }
@@ -106,17 +114,14 @@ Result<MobileChoice> chooseMobile(const world::World& world, const Cell& goal,
 }
 
 bool isRunOutputKey(std::string_view key) {
-  static constexpr std::array<std::string_view, 23> kKeys = {"program",
-                                                             "parameters",
-                                                             "stopped_at_limit",
+  // The program's name, what the watch of a target writes, the reason of a failure and the
+  // statistics (frontend/run_json.cpp).
+  static constexpr std::array<std::string_view, 18> kKeys = {"program",
                                                              "success",
                                                              "reason",
                                                              "final",
                                                              "missing",
                                                              "extra",
-                                                             "walkers",
-                                                             "distances",
-                                                             "path",
                                                              "motions",
                                                              "makespan_s",
                                                              "messages",
@@ -134,16 +139,16 @@ bool isRunOutputKey(std::string_view key) {
 
 Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
                              const RunRequest& request) {
-  const auto info = algorithms::programInfo(request.program, request.added);
-  if (!info.ok()) return Error{info.error()};
-  if (info->entry) {
-    if (const Status cells = checkCellParameters(world, *info->entry, request.parameters);
+  const auto kind = algorithms::programKind(request.program, request.added);
+  if (!kind.ok()) return Error{kind.error()};
+  if (kind->entry) {
+    if (const Status cells = checkCellParameters(world, *kind->entry, request.parameters);
         !cells.ok()) {
       return Error{cells.error()};
     }
   }
-  if (info->needsGoal && !request.goal) {
-    return Error{std::string(info->name) + " needs a goal cell (--goal)"};
+  if (kind->needsGoal && !request.goal) {
+    return Error{std::string(kind->name) + " needs a goal cell (--goal)"};
   }
   if (request.goal && !world.isInside(*request.goal)) {
     return Error{"goal " + toString(*request.goal) + " " +
@@ -153,15 +158,15 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     return Error{"start " + toString(*request.start) + " " +
                  world.bounds().whyOutside(*request.start)};
   }
-  if (info->mobileWalks && !request.start) {
-    return Error{std::string(info->name) + " needs a start cell (--start)"};
+  if (kind->needsStart && !request.start) {
+    return Error{std::string(kind->name) + " needs a start cell (--start)"};
   }
 
   std::shared_ptr<const algorithms::TargetShape> shape;
   ReshapeLimits limits = request.reshape;
-  if (info->reshapes) {
+  if (kind->needsTarget) {
     if (request.targets.empty()) {
-      return Error{std::string(info->name) +
+      return Error{std::string(kind->name) +
                    " needs a target: the scene has none (add one, or give --target FILE)"};
     }
     const std::vector<Cell>& target = request.targets.front();
@@ -169,7 +174,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
       return Error{
           fmt::format("the target has {} cells but the scene {} modules: {} needs as many "
                       "of each",
-                      target.size(), world.size(), info->name)};
+                      target.size(), world.size(), kind->name)};
     }
     for (const Cell& cell : target) {
       if (!world.isInside(cell)) {
@@ -183,9 +188,9 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     limits = limitsFor(limits, world.size(), movers, request.simulation.maxMotions);
   }
 
-  // The gradient's programs have a goal and a mobile; the others run on the scene as it is.
+  // A program with a goal has a mobile; the others run on the scene as it is.
   std::optional<ModuleId> mobile;
-  if (info->needsGoal) {
+  if (kind->needsGoal) {
     auto placed = placeMobile(world, request);
     if (!placed.ok()) return Error{placed.error()};
     mobile = *placed;
@@ -197,11 +202,12 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   }
   world.latchAllNeighbours();
 
-  auto programs = algorithms::makePrograms(
-      request.program,
-      {{request.goal.value_or(Cell{}), mobile.value_or(ModuleId{})}, shape, request.parameters},
-      world.size(), request.added);
-  if (!programs.ok()) return Error{programs.error()};
+  auto made =
+      algorithms::makePrograms(request.program, {request.goal, mobile, shape, request.parameters},
+                               world.size(), request.added);
+  if (!made.ok()) return Error{made.error()};
+  // Shared from here on: the program's sections read after the run (RunEnd::keep) keep it.
+  std::shared_ptr<algorithms::ProgramSet> programs = std::move(*made);
 
   sim::SimulationOptions options = request.simulation;
   options.mobile = mobile;
@@ -209,114 +215,49 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   if (request.trace) trace.header(world, request.description, request.targets);
   sim::Simulator simulator(std::move(world), table, options);
   if (request.trace) simulator.subscribe(&trace);
-  simulator.install(**programs);
+  simulator.install(*programs);
 
   RunResult result;
   Status status = Ok{};
-  if (info->reshapes) {
+  if (kind->ending == algorithms::ProgramKind::Ending::kTargetBuilt) {
     // Watched slice by slice until the target is built or the run stops; a stopped run is a
     // result too.
-    result.reshape = watchReshape(simulator, table, request.targets.front(), **programs, limits);
+    result.reshape = watchReshape(simulator, table, request.targets.front(), *programs, limits);
   } else {
-    // The gradient settles first; then, where the mobile walks, it is triggered.
     simulator.startAll();
     status = simulator.run(request.until.value_or(INT64_MAX));
     result.stoppedAtLimit = status.ok() && simulator.pending();
   }
-  if (status.ok() && info->mobileWalks) {
-    simulator.trigger(*mobile, algorithms::FollowGradientProgram::kFollowTrigger);
+  if (status.ok() && kind->mobileTrigger) {
+    simulator.trigger(*mobile, *kind->mobileTrigger);
     status = simulator.run();
   }
   // From here on a failure is a result: what the run did is kept, so that it can be looked at.
   if (!status.ok()) result.failure = status.error();
+  if (!result.failure) result.failure = programs->failure();
 
-  result.mobile = mobile.value_or(ModuleId{});
+  result.mobile = mobile;
   result.statistics = simulator.statistics();
-  const world::World& ended = simulator.world();
-  result.distances = (*programs)->distances(modulesAtEnd(ended));
-
-  if (const auto failed = (*programs)->failure(); failed && !result.failure) {
-    result.failure = fmt::format("module {} failed: {}", failed->first.value, failed->second);
-  }
-  if (const auto walk = (*programs)->mobile()) {
-    result.arrived = walk->arrived && !walk->failure;
-    result.path = walk->path;
-    if (walk->failure && !result.failure) result.failure = "the mobile stopped: " + *walk->failure;
-    if (!walk->arrived && !result.failure) {
-      result.failure = fmt::format("the mobile did not reach the goal {}: {}",
-                                   toString(*request.goal), walk->wait);
-    }
-  }
-  result.walkers = (*programs)->walkers();
   if (request.trace) {
     trace.footer(simulator.now(), summaryJson(result.statistics));
     result.trace = trace.text();
   }
-  if (info->entry) {
-    result.reports =
-        std::make_shared<const RunReports>(std::move(*programs), std::move(simulator).ended());
-    for (const std::string& key : result.reports->keys()) {
-      if (isRunOutputKey(key)) {
-        return Error{
-            fmt::format("program {} reports \"{}\", a key the run's output uses itself; "
-                        "report it under another name",
-                        request.program, key)};
-      }
+  // The program reads its results on the ended world, which its sections may keep.
+  const auto ended =
+      std::make_shared<const EndedRun>(EndedRun{programs, std::move(simulator).ended()});
+  programs->report({modulesAtEnd(ended->world), result.stoppedAtLimit, ended}, result.report);
+  std::vector<std::string_view> keys;
+  for (const algorithms::RunReport::Section& section : result.report.sections()) {
+    const bool twice = std::find(keys.begin(), keys.end(), section.key) != keys.end();
+    if (twice || isRunOutputKey(section.key)) {
+      return Error{
+          fmt::format("program {} reports \"{}\", a key the run's output uses itself; "
+                      "report it under another name",
+                      request.program, section.key)};
     }
+    keys.push_back(section.key);
   }
   return result;
-}
-
-RunReports::RunReports(std::unique_ptr<algorithms::ProgramSet> programs, world::World ended)
-    : programs_(std::move(programs)), world_(std::move(ended)) {
-  // The keys: one pass over every module's report.
-  struct Keys final : Report {
-    void set(std::string_view key, double) override {
-      if (std::find(names.begin(), names.end(), key) == names.end()) names.emplace_back(key);
-    }
-    std::vector<std::string> names;
-  } keys;
-  for (uint32_t slot = 0; slot < world_.size(); ++slot) programs_->report(slot, keys);
-  keys_ = std::move(keys.names);
-  std::sort(keys_.begin(), keys_.end());
-}
-
-void RunReports::forEach(std::string_view key,
-                         const std::function<void(const Cell&, double)>& each) const {
-  struct OneKey final : Report {
-    void set(std::string_view reported, double value) override {
-      if (reported == key) found = value;
-    }
-    std::string_view key;
-    std::optional<double> found;
-  } one;
-  one.key = key;
-  // Cell order is no order in memory: a program is read kAhead cells after the first hint and
-  // kNear after the second (ProgramSource::prefetch), so that its cache misses overlap with the
-  // reading of the programs before it.
-  constexpr size_t kAhead = 16, kNear = 8;
-  std::array<std::pair<uint32_t, Cell>, kAhead> waiting;
-  size_t taken = 0, given = 0;
-  const auto readOne = [&] {
-    const auto& [slot, cell] = waiting[taken++ % kAhead];
-    one.found.reset();
-    programs_->report(slot, one);
-    if (one.found) each(cell, *one.found);
-  };
-  world_.forEachInCellOrder([&](uint32_t slot, const Cell& cell) {
-    if (given - taken == kAhead) readOne();
-    waiting[given++ % kAhead] = {slot, cell};
-    const bool nearOne = given - taken > kNear;
-    programs_->prefetch(slot, nearOne ? waiting[(given - kNear - 1) % kAhead].first
-                                      : algorithms::ProgramSet::kNoSlot);
-  });
-  while (taken < given) readOne();
-}
-
-std::vector<std::pair<Cell, double>> RunReports::values(std::string_view key) const {
-  std::vector<std::pair<Cell, double>> out;
-  forEach(key, [&](const Cell& cell, double value) { out.push_back({cell, value}); });
-  return out;
 }
 
 }  // namespace datomsim::experiment

@@ -1,9 +1,12 @@
 // Running a module program on a scene, as `datomsim run` and `datomsim demo` do.
 //
-// The mobile is the module at the start cell if any; else the module at the goal, moved to the
-// start first (as in the paper's experiment); else a new module. All modules run the program.
-// For follow-gradient, the gradient runs until no event remains, then the mobile is triggered
-// and follows it to the goal.
+// One path for every program, which it never names: the program's kind (algorithms/program_kind.h)
+// says which cells the run must give it, how the run ends and what it reports. Where a program
+// needs a goal, the mobile is the module at the start cell if any; else the module at the goal,
+// moved to the start first (as in the paper's experiment); else a new module. All modules run the
+// program; the run goes on until no event remains (or --until), or, for a program that builds a
+// target, until the target is built or the run stalls. A program that declares a trigger for its
+// mobile (follow-gradient) gets it then, and the run goes on until no event remains again.
 #pragma once
 
 #include <functional>
@@ -44,7 +47,8 @@ Result<MobileChoice> chooseMobile(const world::World& world, const geometry::Cel
                                   const std::optional<geometry::Cell>& start);
 
 struct RunRequest {
-  std::string program{algorithms::kGradient};
+  // The program's name (algorithms/registry.h).
+  std::string program;
   // The gradient's goal; programs that have none (walkers) run without.
   std::optional<geometry::Cell> goal;
   std::optional<geometry::Cell> start;
@@ -65,44 +69,18 @@ struct RunRequest {
   std::optional<Time> until;
 };
 
-// What the modules of a public-API program reported at the end of the run (Program::report),
-// read from their programs as the output is written, not copied out: a million modules' reports
-// would be 24 MB more. It keeps the run's programs and its final world for that.
-class RunReports {
- public:
-  RunReports(std::unique_ptr<algorithms::ProgramSet> programs, world::World ended);
-
-  // The keys some module reported, in alphabetical order.
-  const std::vector<std::string>& keys() const { return keys_; }
-  // Every value reported under `key`, with the module's cell, sorted by cell (x, then y, then z).
-  void forEach(std::string_view key,
-               const std::function<void(const geometry::Cell&, double)>& each) const;
-  // The same gathered in one list, for small runs and tests.
-  std::vector<std::pair<geometry::Cell, double>> values(std::string_view key) const;
-
- private:
-  std::unique_ptr<algorithms::ProgramSet> programs_;
-  world::World world_;
-  std::vector<std::string> keys_;
-};
-
 struct RunResult {
-  ModuleId mobile;
-  // gradient: every reachable cell and its distance, sorted by x, then y, then z.
-  std::vector<std::pair<geometry::Cell, int>> distances;
-  // follow-gradient: the mobile's cells from start to goal.
-  std::vector<geometry::Cell> path;
-  // walkers: how each walker fared.
-  std::vector<algorithms::WalkerOutcome> walkers;
-  // reconfigure: whether the target was built, and the ensemble at the end. A run that does not
-  // build it is still a result (success false, with the reason), so that it can be inspected.
+  // The mobile, for a program that needs a goal.
+  std::optional<ModuleId> mobile;
+  // A program that builds a target: whether it was built, and the ensemble at the end. A run that
+  // does not build it is still a result (success false, with the reason), so that it can be
+  // inspected.
   std::optional<ReshapeOutcome> reshape;
-  // Public-API programs: what the modules reported (Program::report), by key.
-  std::shared_ptr<const RunReports> reports;
+  // What the program reported after the run (its distances, its mobile's path, its modules'
+  // reports...), section by section. Sections read later keep the ended run alive.
+  algorithms::RunReport report;
   // Whether events remained when the run stopped at `until`.
   bool stoppedAtLimit = false;
-  // follow-gradient: whether the mobile reached the goal.
-  std::optional<bool> arrived;
   // Why the run did not do what it was asked, when it did not: an invariant violated, a module
   // that gave up, a mobile that did not arrive. The rest is filled in as far as the run went,
   // trace included, so that the failure can be looked at and counted.
@@ -111,15 +89,15 @@ struct RunResult {
   std::string trace;  // JSON Lines, when asked for
 };
 
-// The keys of a run's JSON output (`run --out`, docs/file-formats.md), which a program's report
-// may not take.
+// The keys the run's JSON output (`run --out`, docs/file-formats.md) writes itself, around the
+// program's sections, which may not take them.
 bool isRunOutputKey(std::string_view key);
 
 // Refuses, before running, a goal or start outside the world, an unknown program, bad parameters
-// (and cell parameters outside the world, or empty where the program needs a module),
-// follow-gradient without a start, reconfigure without a target of as many cells as modules; and,
-// after it, a program that reports under a key of the run's own output. A run that fails (an
-// invariant violated, a mobile that does not arrive) is a result with its `failure`.
+// (and cell parameters outside the world, or empty where the program needs a module), a program
+// without the goal, start or target (of as many cells as modules) its kind needs; and, after it,
+// a program that reports under a key of the run's own output, or twice under one key. A run that
+// fails (an invariant violated, a mobile that does not arrive) is a result with its `failure`.
 Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
                              const RunRequest& request);
 

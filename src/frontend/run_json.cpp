@@ -2,6 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <type_traits>
+#include <variant>
+
 #include "frontend/json_stream.h"
 #include "sim/statistics.h"
 
@@ -9,49 +12,68 @@ namespace datomsim::frontend {
 
 namespace {
 
-void streamRunJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
-                   const std::map<std::string, std::string>& parameters,
+nlohmann::ordered_json jsonOf(const algorithms::RunReport::Scalar& scalar) {
+  return std::visit(
+      [](const auto& value) -> nlohmann::ordered_json {
+        if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::monostate>) {
+          return nullptr;
+        } else {
+          return value;
+        }
+      },
+      scalar);
+}
+
+nlohmann::ordered_json jsonOf(const algorithms::RunReport::Record& record) {
+  nlohmann::ordered_json object = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : record) object[key] = jsonOf(value);
+  return object;
+}
+
+// A program's section, by the kind of its value.
+void writeSection(JsonObjectStream& out, const algorithms::RunReport::Section& section) {
+  using Report = algorithms::RunReport;
+  const std::string& key = section.key;
+  std::visit(
+      [&](const auto& value) {
+        using Value = std::decay_t<decltype(value)>;
+        if constexpr (std::is_same_v<Value, bool>) {
+          out.field(key, value);
+        } else if constexpr (std::is_same_v<Value, Report::Record>) {
+          out.field(key, jsonOf(value));
+        } else if constexpr (std::is_same_v<Value, std::vector<Report::Record>>) {
+          nlohmann::ordered_json list = nlohmann::ordered_json::array();
+          for (const Report::Record& record : value) list.push_back(jsonOf(record));
+          out.field(key, list);
+        } else if constexpr (std::is_same_v<Value, std::vector<geometry::Cell>>) {
+          out.cells(key, value);
+        } else if constexpr (std::is_same_v<Value, Report::CellInts>) {
+          out.cellValues(key, value);
+        } else {
+          static_assert(std::is_same_v<Value, Report::Streamed>);
+          out.cellValues(key, [&](const JsonObjectStream::CellValue& write) { value(write); });
+        }
+      },
+      section.value);
+}
+
+// The program's name; what the watch of a target found; the program's own sections; why the run
+// failed; the statistics.
+void streamRunJson(std::string_view program, const experiment::RunResult& result,
                    JsonObjectStream::Emit emit) {
   const sim::Statistics& statistics = result.statistics;
   auto seconds = [](Time t) { return double(t) / kSecond; };
   JsonObjectStream out(std::move(emit));
-  out.field("program", info.name);
+  out.field("program", program);
   if (result.reshape) {
     out.field("success", result.reshape->success);
     if (!result.reshape->success) out.field("reason", result.reshape->reason);
     out.cells("final", result.reshape->final);
     out.cells("missing", result.reshape->missing);
     out.cells("extra", result.reshape->extra);
-  } else if (info.entry) {
-    // A public-API program: its parameters, then what its modules reported, key by key.
-    nlohmann::ordered_json given = nlohmann::ordered_json::object();
-    for (const auto& [name, value] : parameters) given[name] = value;
-    out.field("parameters", given);
-    out.field("stopped_at_limit", result.stoppedAtLimit);
-    if (result.reports) {
-      for (const std::string& key : result.reports->keys()) {
-        out.cellValues(key, [&](const JsonObjectStream::CellValue& write) {
-          result.reports->forEach(key, write);
-        });
-      }
-    }
-  } else if (!info.needsGoal) {
-    nlohmann::ordered_json walkers = nlohmann::ordered_json::array();
-    for (const algorithms::WalkerOutcome& walker : result.walkers) {
-      walkers.push_back({{"id", walker.id.value},
-                         {"steps", walker.steps},
-                         {"refusals", walker.refusals},
-                         {"finished", walker.finished},
-                         {"failure", walker.failure ? nlohmann::ordered_json(*walker.failure)
-                                                    : nlohmann::ordered_json()}});
-    }
-    out.field("walkers", walkers);
-  } else if (!info.mobileWalks) {
-    // Exactly as `reach` writes its distances.
-    out.cellValues("distances", result.distances);
-  } else {
-    out.cells("path", result.path);
-    out.field("arrived", result.arrived.value_or(false));
+  }
+  for (const algorithms::RunReport::Section& section : result.report.sections()) {
+    writeSection(out, section);
   }
   if (result.failure && !result.reshape) out.field("reason", *result.failure);
   out.field("motions", statistics.motions);
@@ -80,17 +102,16 @@ void streamRunJson(const algorithms::ProgramInfo& info, const experiment::RunRes
 
 }  // namespace
 
-std::string runJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
-                    const std::map<std::string, std::string>& parameters) {
+std::string runJson(std::string_view program, const experiment::RunResult& result) {
   std::string text;
-  streamRunJson(info, result, parameters, [&](std::string_view piece) { text += piece; });
+  streamRunJson(program, result, [&](std::string_view piece) { text += piece; });
   return text;
 }
 
-Status writeRunJson(const algorithms::ProgramInfo& info, const experiment::RunResult& result,
-                    const std::map<std::string, std::string>& parameters, std::FILE* file) {
+Status writeRunJson(std::string_view program, const experiment::RunResult& result,
+                    std::FILE* file) {
   FileEmitter emitter{file};
-  streamRunJson(info, result, parameters, emitter.emit());
+  streamRunJson(program, result, emitter.emit());
   return emitter.status("the result");
 }
 

@@ -4,19 +4,17 @@
 #pragma once
 
 #include <cstdio>
-#include <map>
 #include <string>
+#include <string_view>
 
-#include "algorithms/registry.h"
 #include "datomsim/result.h"
 #include "experiment/run.h"
 
 namespace datomsim::frontend {
 
-std::string runJson(const algorithms::ProgramInfo& program, const experiment::RunResult& result,
-                    const std::map<std::string, std::string>& parameters = {});
+// `program` is the name of the program that ran.
+std::string runJson(std::string_view program, const experiment::RunResult& result);
 // The same, streamed to an open file; the error says what could not be written.
-Status writeRunJson(const algorithms::ProgramInfo& program, const experiment::RunResult& result,
-                    const std::map<std::string, std::string>& parameters, std::FILE* file);
+Status writeRunJson(std::string_view program, const experiment::RunResult& result, std::FILE* file);
 
 }  // namespace datomsim::frontend

@@ -27,10 +27,10 @@ RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArg
   request.program = args.program;
   request.added = added;
   // The command line's --program check, for callers that did not pass through it (Python).
-  const Result<algorithms::ProgramInfo> info = algorithms::programInfo(args.program, added);
-  if (!info) {
+  const Result<algorithms::ProgramKind> kind = algorithms::programKind(args.program, added);
+  if (!kind) {
     std::string names;
-    for (const algorithms::ProgramInfo& known : algorithms::programs(added)) {
+    for (const algorithms::ProgramKind& known : algorithms::programs(added)) {
       // Appended piece by piece: GCC 12 at -O3 takes `"," + std::string(...)` for an
       // overlapping copy (-Wrestrict, a false alarm) once this function is compiled on its own.
       if (!names.empty()) names += ',';
@@ -42,7 +42,7 @@ RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArg
   if (!args.start.empty()) request.start = parseCell("--start", args.start);
   request.simulation.rules = args.rules.options();
   request.simulation.connectivity = request.simulation.rules.connectivity;
-  if (info->reshapes) {
+  if (kind->needsTarget) {
     // Reconfiguration keeps the ensemble in one piece unless told otherwise; the engine checks
     // it live, and the modules' gradient judges rules without it (docs/reconfiguration.md).
     request.simulation.connectivity = args.rules.connectivity == "on" || !args.connectivityGiven;
@@ -81,8 +81,8 @@ RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArg
     request.parameters[pair.substr(0, equals)] = pair.substr(equals + 1);
   }
   const motion::RuleTable table;
-  RunOutput output{*info, unwrap(experiment::runProgram(std::move(scene.world), table, request)),
-                   request.parameters, std::nullopt};
+  RunOutput output{*kind, unwrap(experiment::runProgram(std::move(scene.world), table, request)),
+                   std::nullopt};
   if (output.result.reshape && !output.result.reshape->success) {
     output.failure = "the target was not built: " + output.result.reshape->reason;
   } else if (output.result.failure) {

@@ -39,9 +39,8 @@ struct RunArguments {
 // A run and what its JSON is made of (runJson); `failure` says why it did not do what it was
 // asked (the target not built, the mobile stuck, an invariant violated), when it did not.
 struct RunOutput {
-  algorithms::ProgramInfo info;
+  algorithms::ProgramKind kind;
   experiment::RunResult result;
-  std::map<std::string, std::string> parameters;
   std::optional<std::string> failure;
 };
 

@@ -38,12 +38,13 @@ TEST(PaperExperiment, DistributedGradientEqualsReachOnBothArchScenes) {
   for (const int hole : {2, 1}) {
     for (const bool attachment : {true, false}) {
       experiment::RunRequest request;
+      request.program = "gradient";
       request.goal = scene::kPaperGoal;
       request.simulation.rules.attachment = attachment;
       const auto run = experiment::runProgram(paperScene(hole), table(), request);
       ASSERT_TRUE(run.ok()) << run.error();
       ASSERT_FALSE(run->failure) << *run->failure;
-      EXPECT_EQ(run->distances,
+      EXPECT_EQ(run->report.cellInts("distances"),
                 reachDistances(paperScene(hole), *request.goal, request.simulation.rules))
           << "hole " << hole;
       EXPECT_GT(run->statistics.messagesByType.at("DistanceMsg"), 0u);
@@ -63,6 +64,7 @@ TEST(PaperExperiment, DistributedGradientEqualsReachOnRandomScenes) {
     while (world->moduleAt(goal)) goal = goal + Cell{0, 0, 1};
     for (const motion::RuleSet rules : {motion::RuleSet::kPaper, motion::RuleSet::kStrict}) {
       experiment::RunRequest request;
+      request.program = "gradient";
       request.goal = goal;
       request.simulation.rules.rules = rules;
       request.simulation.seed = seed;
@@ -70,7 +72,8 @@ TEST(PaperExperiment, DistributedGradientEqualsReachOnRandomScenes) {
       ASSERT_TRUE(run.ok()) << run.error();
       ASSERT_FALSE(run->failure) << *run->failure;
       // The new mobile stands at the goal in the distributed run; reach imagines it there.
-      EXPECT_EQ(run->distances, reachDistances(*world, goal, request.simulation.rules))
+      EXPECT_EQ(run->report.cellInts("distances"),
+                reachDistances(*world, goal, request.simulation.rules))
           << "seed " << seed;
     }
   }
@@ -106,7 +109,7 @@ int distanceOf(const std::vector<std::pair<Cell, int>>& distances, const Cell& c
 TEST(PaperExperiment, FollowGradientReachesTheGoalInAsManyMotionsAsTheStartsDistance) {
   for (const int hole : {2, 1}) {
     const FollowRun run = followOnPaperScene(hole);
-    const auto& path = run.result.path;
+    const auto& path = run.result.report.cells("path");
     ASSERT_GE(path.size(), 2u);
     EXPECT_EQ(path.front(), scene::kPaperStart);
     EXPECT_EQ(path.back(), scene::kPaperGoal);
@@ -129,7 +132,7 @@ TEST(PaperExperiment, FollowGradientTakesTheSamePathAsTheCentralisedWalk) {
     ASSERT_TRUE(walk.ok());
     std::vector<Cell> expected = {scene::kPaperStart};
     for (const motion::Motion& m : *walk) expected.push_back(m.goal);
-    EXPECT_EQ(run.result.path, expected) << "hole " << hole;
+    EXPECT_EQ(run.result.report.cells("path"), expected) << "hole " << hole;
   }
 }
 
@@ -171,16 +174,16 @@ TEST(PaperExperiment, FollowGradientArrivesOrSaysWhyOnRandomScenes) {
       EXPECT_NE(run->failure->find("did not reach the goal " + toString(goal) + ": at "),
                 std::string::npos)
           << "seed " << seed << ": " << *run->failure;
-      EXPECT_EQ(run->arrived, false);
+      EXPECT_EQ(run->report.flag("arrived"), false);
       // What the mobile did is kept: it set out from the start.
-      ASSERT_FALSE(run->path.empty());
-      EXPECT_EQ(run->path.front(), start);
+      ASSERT_FALSE(run->report.cells("path").empty());
+      EXPECT_EQ(run->report.cells("path").front(), start);
       continue;
     }
-    EXPECT_EQ(run->arrived, true);
+    EXPECT_EQ(run->report.flag("arrived"), true);
     ++arrived;
-    EXPECT_EQ(int(run->path.size()) - 1, farthest) << "seed " << seed;
-    EXPECT_EQ(run->path.back(), goal);
+    EXPECT_EQ(int(run->report.cells("path").size()) - 1, farthest) << "seed " << seed;
+    EXPECT_EQ(run->report.cells("path").back(), goal);
     const auto& messages = run->statistics.messagesByType;
     if (messages.contains("DeformMsg") && messages.contains("AckDeform") &&
         messages.at("AckDeform") > messages.at("DeformMsg")) {
@@ -211,7 +214,7 @@ TEST(FollowGradientFailures, AMobileLatchedToNothingSaysSo) {
   ASSERT_TRUE(run->failure.has_value());
   EXPECT_NE(run->failure->find("at 0,0,6 it is latched to no module"), std::string::npos)
       << *run->failure;
-  EXPECT_EQ(run->arrived, false);
+  EXPECT_EQ(run->report.flag("arrived"), false);
 }
 
 TEST(FollowGradientFailures, AGoalOnAnotherIslandIsNotReachable) {
@@ -249,8 +252,8 @@ TEST(PaperObservations, ThePathGoesUnderTheTwoHighArchAndOverTheOneHighOne) {
   EXPECT_FALSE(low.passesUnderArch);
   EXPECT_GE(low.highestPathLayer, 4);  // over the obstacle
   // The simulated Algorithm 1 walks the same path as the centralised walk.
-  EXPECT_EQ(high.run.path, high.path);
-  EXPECT_EQ(low.run.path, low.path);
+  EXPECT_EQ(high.run.report.cells("path"), high.path);
+  EXPECT_EQ(low.run.report.cells("path"), low.path);
 }
 
 TEST(PaperObservations, CellsOnTheFarSideGetLargerDistancesWhenTheHoleIsOneHigh) {

@@ -22,7 +22,7 @@ const motion::RuleTable& table() {
 
 experiment::RunRequest reconfigure(const std::vector<Cell>& target, uint64_t seed = 1) {
   experiment::RunRequest request;
-  request.program = std::string(kReconfigure);
+  request.program = "reconfigure";
   request.targets = {target};
   request.simulation.seed = seed;
   request.simulation.connectivity = true;

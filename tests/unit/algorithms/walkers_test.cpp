@@ -28,15 +28,20 @@ world::World walkersScene() {
 // A walker may end hemmed in by walkers that have finished (they only take motions that need no
 // deformation): it gives up, which is an outcome of the walk, not an error of the engine.
 void expectWalked(const experiment::RunResult& run) {
-  ASSERT_EQ(run.walkers.size(), 10u);
+  const std::vector<RunReport::Record> walkers = run.report.records("walkers");
+  ASSERT_EQ(walkers.size(), 10u);
   int finished = 0;
-  for (const WalkerOutcome& walker : run.walkers) {
-    if (walker.finished) {
+  for (const RunReport::Record& walker : walkers) {
+    const bool* done = RunReport::field<bool>(walker, "finished");
+    ASSERT_NE(done, nullptr);
+    if (*done) {
       ++finished;
-      EXPECT_EQ(walker.steps, WalkerProgram::kSteps);
+      EXPECT_EQ(*RunReport::field<int64_t>(walker, "steps"), WalkerProgram::kSteps);
+      EXPECT_NE(RunReport::field<std::monostate>(walker, "failure"), nullptr);
     } else {
-      ASSERT_TRUE(walker.failure.has_value());
-      EXPECT_NE(walker.failure->find("gave up"), std::string::npos) << *walker.failure;
+      const std::string* failure = RunReport::field<std::string>(walker, "failure");
+      ASSERT_NE(failure, nullptr);
+      EXPECT_NE(failure->find("gave up"), std::string::npos) << *failure;
     }
   }
   EXPECT_GE(finished, 8);
@@ -46,7 +51,7 @@ void expectWalked(const experiment::RunResult& run) {
 experiment::RunResult walk(sim::SimulationOptions options, bool trace = false) {
   static const motion::RuleTable kTable;
   experiment::RunRequest request;
-  request.program = std::string(kWalkers);
+  request.program = "walkers";
   request.simulation = options;
   request.trace = trace;
   auto result = experiment::runProgram(walkersScene(), kTable, request);

@@ -39,7 +39,7 @@ std::map<Cell, int> breadthFirst(const world::World& world, const Cell& root) {
 
 std::map<Cell, int> flood(world::World world, const Cell& root, Time jitter) {
   experiment::RunRequest request;
-  request.program = std::string(algorithms::kFlood);
+  request.program = "flood";
   request.parameters = {{"root", toString(root)}};
   request.simulation.messageJitter = jitter;
   const auto run = experiment::runProgram(std::move(world), table(), request);
@@ -49,10 +49,11 @@ std::map<Cell, int> flood(world::World world, const Cell& root, Time jitter) {
   }
   std::map<Cell, int> hops;
   if (!run.ok()) return hops;
-  EXPECT_TRUE(run->reports);
-  if (!run->reports) return hops;
-  EXPECT_EQ(run->reports->keys(), std::vector<std::string>{"hops"});
-  for (const auto& [cell, value] : run->reports->values("hops")) hops[cell] = int(value);
+  // The parameters as given, whether --until stopped the run, then the one key reported.
+  std::vector<std::string> keys;
+  for (const auto& section : run->report.sections()) keys.push_back(section.key);
+  EXPECT_EQ(keys, (std::vector<std::string>{"parameters", "stopped_at_limit", "hops"}));
+  for (const auto& [cell, value] : run->report.cellValues("hops")) hops[cell] = int(value);
   return hops;
 }
 

@@ -153,10 +153,10 @@ TEST(ProgramApi, AQueuedMotionRefusedWhenItsTurnComesReachesOnMotionEnded) {
             std::string::npos);
   EXPECT_NE(run->trace.find("\"note\":\"module " + std::to_string(secondId) + ": refused: "),
             std::string::npos);
-  ASSERT_TRUE(run->reports);
-  EXPECT_EQ(run->reports->keys(), std::vector<std::string>{"arrived"});
+  ASSERT_EQ(run->report.sections().size(), 3u);
+  EXPECT_EQ(run->report.sections()[2].key, "arrived");
   const std::vector<std::pair<Cell, double>> expected = {{second, 0.0}, {*goal, 1.0}};
-  auto reported = run->reports->values("arrived");
+  auto reported = run->report.cellValues("arrived");
   EXPECT_EQ(reported.size(), 2u);
   for (const auto& pair : expected) {
     EXPECT_NE(std::find(reported.begin(), reported.end(), pair), reported.end())

@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "io/scene_file.h"
+#include "scene/reshape.h"
 
 namespace datomsim::app {
 
@@ -27,6 +28,11 @@ void addReshapeGenerator(CLI::App& generate, const Reporter& reporter) {
       ->check(CLI::Range(1, 10000000))
       ->capture_default_str();
   command->add_option("--seed", args->seed, "random: the seed")->capture_default_str();
+  command
+      ->add_option("--height", args->height,
+                   "random: the target's layers above the floor at most (1 keeps it flat)")
+      ->check(CLI::Range(1, scene::kMaxRandomTargetHeight))
+      ->capture_default_str();
   command->add_option("--side", args->side, "pyramid: the floor's side")->capture_default_str();
   command->add_option("--base", args->base, "pyramid: the pyramid's base (default: side / 8)")
       ->check(CLI::Range(1, 10000));

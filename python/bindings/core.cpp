@@ -248,7 +248,7 @@ PYBIND11_MODULE(_core, module) {
   module.def(
       "reshape",
       [](const std::string& kase, int length, const py::object& floor, int modules, uint64_t seed,
-         int side, int base) {
+         int side, int base, int height) {
         frontend::ReshapeArguments args;
         args.kase = kase;
         args.length = length;
@@ -262,10 +262,12 @@ PYBIND11_MODULE(_core, module) {
         args.seed = std::to_string(seed);
         args.side = side;
         args.base = base;
+        args.height = height;
         return Scene(frontend::reshapeCase(args));
       },
       py::arg("case"), py::arg("length") = 8, py::arg("floor") = py::make_tuple(12, 12),
       py::arg("modules") = 20, py::arg("seed") = 1, py::arg("side") = 96, py::arg("base") = 0,
+      py::arg("height") = 2,
       "A reconfiguration case (generate reshape): its scene, the shape to build as its target");
   module.def("reach", &reach, py::arg("scene"), py::arg("goal"), py::arg("start") = py::none(),
              py::arg("rules") = "paper", py::arg("attachment") = true,

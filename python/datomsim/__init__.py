@@ -71,11 +71,13 @@ def reshape(
     seed: int = 1,
     side: int = 96,
     base: int = 0,
+    height: int = 2,
 ) -> Scene:
     """A reconfiguration case, as ``generate reshape CASE``: arch2, arch1, line (``length``),
-    heap (``floor``), random (``floor``, ``modules``, ``seed``) or pyramid (``side``, ``base``).
+    heap (``floor``), random (``floor``, ``modules``, ``seed``, ``height``: the target's layers
+    at most) or pyramid (``side``, ``base``).
     The scene's first target is the shape ``run(scene, "reconfigure")`` builds."""
-    return _core.reshape(case, length, floor, modules, seed, side, base)
+    return _core.reshape(case, length, floor, modules, seed, side, base, height)
 
 
 @dataclass(frozen=True)

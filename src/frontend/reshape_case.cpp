@@ -69,7 +69,7 @@ io::Scene reshapeCase(const ReshapeArguments& args) {
       : kase == "pyramid"
           ? unwrap(scene::cornerToPyramid(args.side, args.base))
           : unwrap(scene::randomReshape(floorSize().first, floorSize().second, args.modules,
-                                        parseSeed("--seed", args.seed)));
+                                        parseSeed("--seed", args.seed), args.height));
   target::Target target = unwrap(target::Target::grid(reshape.target));
   return sceneOf(std::move(reshape), std::move(target));
 }

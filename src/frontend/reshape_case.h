@@ -14,6 +14,7 @@ struct ReshapeArguments {
   std::string kase, out, floor = "12,12";
   int length = 8;
   int modules = 20;
+  int height = 2;
   int side = 96;
   int base = 0;
   std::string seed = "1";

@@ -124,7 +124,11 @@ Result<world::World> heapOnFloor(int floorX, int floorY, int count) {
   return world;
 }
 
-Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t seed) {
+Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t seed, int height) {
+  if (height < 1 || height > kMaxRandomTargetHeight) {
+    return Error{"a random target is 1 to " + std::to_string(kMaxRandomTargetHeight) +
+                 " layers high, not " + std::to_string(height)};
+  }
   if (count < 1 || count > (floorX - 1) * (floorY - 1) / 2) {
     return Error{"a random reshape of " + std::to_string(count) +
                  " modules needs a floor with at "
@@ -150,22 +154,38 @@ Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t se
     if (!added.ok()) return Error{added.error()};
   }
   // The target grows from a random cell: a random neighbour of the cells so far, on the layer, or
-  // now and then one layer up where four target cells hold it.
+  // one layer up (up to `height`) where four target cells hold it: now and then for a low target
+  // (height 2), always for a taller one, whose first layer is also kept to a footprint so that
+  // the shape grows up as a mound instead of spreading. The floor's top layer has room for twice
+  // the cells, and a footprint that leaves no cell to grow into is widened, so the growth ends.
+  const bool tall = height > 2;
+  size_t footprint = tall ? size_t(std::max(std::ceil(2.0 * count / height),
+                                            std::ceil(2.0 * std::pow(double(count), 2.0 / 3.0))))
+                          : size_t(count);
+  size_t firstLayer = 1, triesSinceGrowth = 0;
   std::vector<Cell> grown = {randomTop()};
   std::set<Cell> shape(grown.begin(), grown.end());
   while (int(grown.size()) < count) {
+    if (++triesSinceGrowth > 64 * size_t(count)) {
+      ++footprint;
+      triesSinceGrowth = 0;
+    }
     const Cell from = grown[random.below(grown.size())];
     Cell next = from + geometry::neighbourOffset(int(random.below(geometry::kDirectionCount)));
-    if (next.z == 2) {
+    if (next.z >= 2 && next.z <= height) {
       bool held = true;
       for (int below = 8; below < 12; ++below) {
         held = held && shape.count(next + geometry::neighbourOffset(below));
       }
-      if (!held || random.below(4) != 0) continue;
-    } else if (!onTop(next)) {
+      if (!held || (!tall && random.below(4) != 0)) continue;
+    } else if (!onTop(next) || (next.z == 1 && firstLayer >= footprint)) {
       continue;
     }
-    if (shape.insert(next).second) grown.push_back(next);
+    if (shape.insert(next).second) {
+      grown.push_back(next);
+      if (next.z == 1) ++firstLayer;
+      triesSinceGrowth = 0;
+    }
   }
   reshape.target.insert(reshape.target.end(), grown.begin(), grown.end());
   reshape.description = "a floor " + std::to_string(floorX) + " by " + std::to_string(floorY) +

@@ -32,9 +32,11 @@ Result<ReshapeCase> lineToBlock(int length);
 Result<world::World> heapOnFloor(int floorX, int floorY, int count);
 
 // A floor X by Y with `count` modules at random cells on top of it (z = 1), and a random connected
-// target of `count` cells on top of it (grown from a random cell, mostly on z = 1, sometimes one
-// layer up on full support). The same seed gives the same case.
-Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t seed);
+// target of `count` cells on top of it, at most `height` layers high (z = 1 to height): grown from
+// a random cell, mostly on its layer, now and then one layer up on full support. The same seed
+// gives the same case.
+inline constexpr int kMaxRandomTargetHeight = 64;
+Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t seed, int height = 2);
 
 // A side x side floor whose corner holds a flat block of modules, into a pyramid in the floor's
 // middle with as many modules: layers of squares a^2, (a-1)^2, ... 1 for the base a (side / 8

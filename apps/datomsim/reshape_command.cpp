@@ -15,10 +15,10 @@ void addReshapeGenerator(CLI::App& generate, const Reporter& reporter) {
   CLI::App* command = generate.add_subcommand(
       "reshape",
       "A reconfiguration case: a scene and, as its target, the shape to build (arch2, arch1, "
-      "line, heap, random, pyramid)");
-  command->add_option("case", args->kase, "arch2, arch1, line, heap, random or pyramid")
+      "line, heap, random, pyramid, cube)");
+  command->add_option("case", args->kase, "arch2, arch1, line, heap, random, pyramid or cube")
       ->required()
-      ->check(CLI::IsMember({"arch2", "arch1", "line", "heap", "random", "pyramid"}));
+      ->check(CLI::IsMember({"arch2", "arch1", "line", "heap", "random", "pyramid", "cube"}));
   command->add_option("-o,--out", args->out, "Scene file to write (.xml or .json)")->required();
   command->add_option("--length", args->length, "line: modules in the line (a multiple of 4)")
       ->capture_default_str();
@@ -33,8 +33,11 @@ void addReshapeGenerator(CLI::App& generate, const Reporter& reporter) {
                    "random: the target's layers above the floor at most (1 keeps it flat)")
       ->check(CLI::Range(1, scene::kMaxRandomTargetHeight))
       ->capture_default_str();
-  command->add_option("--side", args->side, "pyramid: the floor's side")->capture_default_str();
-  command->add_option("--base", args->base, "pyramid: the pyramid's base (default: side / 8)")
+  command->add_option("--side", args->side, "pyramid, cube: the floor's side")
+      ->capture_default_str();
+  command
+      ->add_option("--base", args->base,
+                   "pyramid: the pyramid's base; cube: the cube's edge (default: side / 8)")
       ->check(CLI::Range(1, 10000));
   addExample(*command, "generate reshape heap -o heap.json");
   command->callback([args, &reporter] {

@@ -75,7 +75,7 @@ def reshape(
 ) -> Scene:
     """A reconfiguration case, as ``generate reshape CASE``: arch2, arch1, line (``length``),
     heap (``floor``), random (``floor``, ``modules``, ``seed``, ``height``: the target's layers
-    at most) or pyramid (``side``, ``base``).
+    at most), pyramid or cube (``side``, ``base``: the pyramid's base, the cube's edge).
     The scene's first target is the shape ``run(scene, "reconfigure")`` builds."""
     return _core.reshape(case, length, floor, modules, seed, side, base, height)
 

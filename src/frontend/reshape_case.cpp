@@ -55,19 +55,20 @@ io::Scene reshapeCase(const ReshapeArguments& args) {
     const auto [x, y] = floorSize();
     return heapToCylinder(x, y);
   }
-  if (kase != "arch2" && kase != "arch1" && kase != "line" && kase != "pyramid" &&
+  if (kase != "arch2" && kase != "arch1" && kase != "line" && kase != "pyramid" && kase != "cube" &&
       kase != "random") {
-    throw UsageError("case: " + kase + " not in {arch2,arch1,line,heap,random,pyramid}");
+    throw UsageError("case: " + kase + " not in {arch2,arch1,line,heap,random,pyramid,cube}");
   }
   if (args.modules < 1 || args.modules > 10'000'000) {
     throw UsageError(fmt::format("--modules: Value {} not in range [1 - 10000000]", args.modules));
   }
   scene::ReshapeCase reshape =
-      kase == "arch2"   ? unwrap(scene::archFromLayer(2))
-      : kase == "arch1" ? unwrap(scene::archFromLayer(1))
-      : kase == "line"  ? unwrap(scene::lineToBlock(args.length))
-      : kase == "pyramid"
-          ? unwrap(scene::cornerToPyramid(args.side, args.base))
+      kase == "arch2"     ? unwrap(scene::archFromLayer(2))
+      : kase == "arch1"   ? unwrap(scene::archFromLayer(1))
+      : kase == "line"    ? unwrap(scene::lineToBlock(args.length))
+      : kase == "pyramid" ? unwrap(scene::cornerToPyramid(args.side, args.base))
+      : kase == "cube"
+          ? unwrap(scene::cornerToCube(args.side, args.base))
           : unwrap(scene::randomReshape(floorSize().first, floorSize().second, args.modules,
                                         parseSeed("--seed", args.seed), args.height));
   target::Target target = unwrap(target::Target::grid(reshape.target));

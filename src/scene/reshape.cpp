@@ -195,44 +195,84 @@ Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t se
   return reshape;
 }
 
-Result<ReshapeCase> cornerToPyramid(int side, int base) {
-  if (side < 8) return Error{"a floor for a pyramid is at least 8 by 8"};
+namespace {
+
+// A side x side floor whose corner holds a flat block of as many modules as `shape` has cells
+// (rows as wide as its square root), with `shape` on the floor as the target; `name` says what
+// the shape is, for the messages and the description.
+Result<ReshapeCase> cornerBlockInto(int side, const std::vector<Cell>& shape,
+                                    const std::string& name) {
+  const int count = int(shape.size());
+  const int width = int(std::ceil(std::sqrt(double(count))));
+  int nearest = side;
+  for (const Cell& cell : shape) nearest = std::min({nearest, cell.x, cell.y});
+  if (width > nearest) {
+    return Error{"a " + name + " needs a floor wider than " + std::to_string(side) +
+                 ": its modules' corner block would reach it"};
+  }
+  auto floor = floorWorld(side, side);
+  if (!floor.ok()) return Error{floor.error()};
+  ReshapeCase reshape{std::move(*floor), floorCells(side, side), {}};
+  for (int placed = 0; placed < count; ++placed) {
+    const Status added = addModule(reshape.world, {placed % width, placed / width, 1});
+    if (!added.ok()) return Error{added.error()};
+  }
+  reshape.target.insert(reshape.target.end(), shape.begin(), shape.end());
+  reshape.description = "a floor " + std::to_string(side) + " by " + std::to_string(side) +
+                        " whose corner block of " + std::to_string(count) + " modules becomes a " +
+                        name;
+  return reshape;
+}
+
+Status checkSquareFloor(int side, int base, const std::string& shape) {
+  if (side < 8) return Error{"a floor for a " + shape + " is at least 8 by 8"};
   if (int64_t{side} * side > int64_t(world::kMaxModules)) {
     return Error{"a floor of " + std::to_string(side) + " by " + std::to_string(side) +
                  " is more modules than a world holds (" + std::to_string(world::kMaxModules) +
                  ", docs/limits.md)"};
   }
-  if (base == 0) base = side / 8;
   if (base < 1 || base > side) {
-    return Error{"the pyramid's base is at least 1 and at most the floor's side (" +
+    return Error{"the " + shape + "'s base is at least 1 and at most the floor's side (" +
                  std::to_string(base) + ")"};
   }
-  int pyramid = 0;
-  for (int layer = base; layer >= 1; --layer) pyramid += layer * layer;
-  const int width = int(std::ceil(std::sqrt(double(pyramid))));
+  return Ok{};
+}
+
+}  // namespace
+
+Result<ReshapeCase> cornerToPyramid(int side, int base) {
+  if (base == 0) base = side / 8;
+  if (const Status floor = checkSquareFloor(side, base, "pyramid"); !floor.ok()) {
+    return Error{floor.error()};
+  }
+  // The pyramid in the middle: layer z is a square of base - z + 1 cells a side, each cell on
+  // four of the layer below.
   const int origin = side / 2 - base / 2;
-  if (width > origin) {
-    return Error{"a pyramid of base " + std::to_string(base) + " needs a floor wider than " +
-                 std::to_string(side) + ": its modules' corner block would reach it"};
-  }
-  auto floor = floorWorld(side, side);
-  if (!floor.ok()) return Error{floor.error()};
-  ReshapeCase reshape{std::move(*floor), floorCells(side, side), {}};
-  // The block in the corner: rows as wide as its square root.
-  for (int placed = 0; placed < pyramid; ++placed) {
-    const Status added = addModule(reshape.world, {placed % width, placed / width, 1});
-    if (!added.ok()) return Error{added.error()};
-  }
-  // The pyramid in the middle: layer z is a square of base - z + 1 cells a side.
+  std::vector<Cell> pyramid;
   for (int z = 1; z <= base; ++z) {
     for (int y = 0; y <= base - z; ++y) {
-      for (int x = 0; x <= base - z; ++x) reshape.target.push_back({origin + x, origin + y, z});
+      for (int x = 0; x <= base - z; ++x) pyramid.push_back({origin + x, origin + y, z});
     }
   }
-  reshape.description = "a floor " + std::to_string(side) + " by " + std::to_string(side) +
-                        " whose corner block of " + std::to_string(pyramid) +
-                        " modules becomes a pyramid of base " + std::to_string(base);
-  return reshape;
+  return cornerBlockInto(side, pyramid, "pyramid of base " + std::to_string(base));
+}
+
+Result<ReshapeCase> cornerToCube(int side, int edge) {
+  if (edge == 0) edge = side / 8;
+  if (const Status floor = checkSquareFloor(side, edge, "cube"); !floor.ok()) {
+    return Error{floor.error()};
+  }
+  // The cube in the middle, upright (docs/coordinates.md): layer z runs over x and y less
+  // floor((z - 1) / 2), so that it stands straight instead of leaning half a cell a layer.
+  const int origin = side / 2 - edge / 2;
+  std::vector<Cell> cube;
+  for (int z = 1; z <= edge; ++z) {
+    const int back = (z - 1) / 2;
+    for (int y = 0; y < edge; ++y) {
+      for (int x = 0; x < edge; ++x) cube.push_back({origin + x - back, origin + y - back, z});
+    }
+  }
+  return cornerBlockInto(side, cube, "cube of edge " + std::to_string(edge));
 }
 
 }  // namespace datomsim::scene

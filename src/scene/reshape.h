@@ -44,4 +44,9 @@ Result<ReshapeCase> randomReshape(int floorX, int floorY, int count, uint64_t se
 // the pyramid's cells.
 Result<ReshapeCase> cornerToPyramid(int side, int base = 0);
 
+// The same with an upright cube of `edge` cells a side (side / 8 when 0) in the floor's middle:
+// `edge` layers of edge x edge cells, each layer shifted back as the lattice leans
+// (docs/coordinates.md), so that the cube stands straight.
+Result<ReshapeCase> cornerToCube(int side, int edge = 0);
+
 }  // namespace datomsim::scene

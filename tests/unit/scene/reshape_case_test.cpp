@@ -69,5 +69,35 @@ TEST(RandomReshape, RefusesAHeightOutOfRange) {
   }
 }
 
+TEST(CornerCases, APyramidAndACubeTakeAsManyModulesAsTheirCellsFromTheCorner) {
+  const auto pyramid = cornerToPyramid(40, 5);
+  ASSERT_TRUE(pyramid.ok()) << pyramid.error();
+  // 5^2 + 4^2 + 3^2 + 2^2 + 1 cells, and the floor's 40 x 40 modules in the target too.
+  EXPECT_EQ(pyramid->target.size(), 1600u + 55u);
+  EXPECT_EQ(pyramid->world.size(), pyramid->target.size());
+  expectHeld(*pyramid);
+
+  const auto cube = cornerToCube(40, 4);
+  ASSERT_TRUE(cube.ok()) << cube.error();
+  EXPECT_EQ(cube->target.size(), 1600u + 64u);
+  EXPECT_EQ(cube->world.size(), cube->target.size());
+  // Upright: every layer's cells lie straight above the first layer's (docs/coordinates.md:
+  // a cell's centre is at x + 0.5 + z / 2 cells along x).
+  double lowest = 1e9, highest = -1e9;
+  for (const Cell& cell : cube->target) {
+    if (cell.z < 1) continue;
+    lowest = std::min(lowest, cell.x + cell.z / 2.0);
+    highest = std::max(highest, cell.x + cell.z / 2.0);
+  }
+  EXPECT_LE(highest - lowest, 4.0);
+  EXPECT_EQ(topLayer(cube->target), 4);
+
+  const auto tooSmall = cornerToCube(12, 9);
+  ASSERT_FALSE(tooSmall.ok());
+  EXPECT_EQ(tooSmall.error(),
+            "a cube of edge 9 needs a floor wider than 12: its modules' corner block would reach "
+            "it");
+}
+
 }  // namespace
 }  // namespace datomsim::scene

@@ -170,3 +170,18 @@ def test_geometry_is_the_papers(cli):
     written = cli("geometry", "--radius", "1", "--thickness", "0.1", "--fraction", "0.5", "--json")
     assert ours == pytest.approx(json.loads(written.stdout))
     assert ours["c"] == pytest.approx(2 / (3 * 2**0.5 - 1))
+
+
+@pytest.mark.parametrize("case, keywords, arguments", [
+    ("random", {"floor": (16, 16), "modules": 60, "seed": 4, "height": 7},
+     ["--floor", "16,16", "--modules", "60", "--seed", "4", "--height", "7"]),
+    ("cube", {"side": 24, "base": 3}, ["--side", "24", "--base", "3"]),
+])
+def test_reshape_cases_are_the_command_lines(cli, tmp_path, case, keywords, arguments):
+    scene = datomsim.reshape(case, **keywords)
+    scene.save(tmp_path / "python.json")
+    made = cli("generate", "reshape", case, *arguments, "-o", "cli.json")
+    assert made.returncode == 0, made.stderr
+    assert (tmp_path / "python.json").read_text() == (tmp_path / "cli.json").read_text()
+    with pytest.raises(datomsim.Error, match="layers high"):
+        datomsim.reshape("random", height=0)

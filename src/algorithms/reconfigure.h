@@ -175,6 +175,8 @@ class ReconfigureProgram : public Program {
   // An attempt failed (a helper refused or was silent, the engine refused): counted, and its goal
   // remembered until the next motion succeeds.
   void attemptFailed();
+  // Whether a goal lies on the bare ground outside the target, where a mover never goes.
+  bool offTheEnsemble(const geometry::Cell& goal) const;
   // A candidate's distance with the failures at its goal counted against it.
   int64_t effective(int candidate) const;
   // A helper's AckDeform or NackDeform.
@@ -220,6 +222,8 @@ class ReconfigureProgram : public Program {
   uint64_t standingVersion_ = 0;
   int roundsWithoutDescent_ = 0;
   std::vector<std::pair<geometry::Cell, int>> failedGoals_;
+  // The cells the mover has arrived at since it last went down the gradient, and how often.
+  std::vector<std::pair<geometry::Cell, int>> visited_;
   std::optional<geometry::Cell> leavingFor_;  // the pocket this module left its cell to fill
   int pocketAttempts_ = 0;
   uint32_t round_ = 0;

@@ -77,7 +77,18 @@ int64_t ReconfigureProgram::effective(int candidate) const {
   for (const auto& [goal, times] : failedGoals_) {
     if (goal == candidates_[candidate].goal) cost += 12 * int64_t(times);
   }
+  // A cell this mover has stood on looks farther each time: a mover with no way down that goes
+  // sideways would otherwise swing between two cells of equal distance for ever (a livelock).
+  for (const auto& [cell, times] : visited_) {
+    if (cell == candidates_[candidate].goal) cost += 6 * int64_t(times);
+  }
   return cost;
+}
+
+bool ReconfigureProgram::offTheEnsemble(const Cell& goal) const {
+  // The bare ground outside the target: a mover that steps down there, beside the ensemble, may
+  // find no way back up (a motion needs a pivot and room around it), and is lost to the shape.
+  return goal.z == 0 && !target_->contains(goal);
 }
 
 void ReconfigureProgram::choose(Context& context) {
@@ -90,7 +101,7 @@ void ReconfigureProgram::choose(Context& context) {
   for (const bool settledPivot : {true, false}) {
     for (size_t i = 0; i < candidates_.size(); ++i) {
       if (candidateVersions_[i] != newest || candidateDistances_[i] == kUnknown ||
-          candidateSettled_[i] != settledPivot) {
+          candidateSettled_[i] != settledPivot || offTheEnsemble(candidates_[i].goal)) {
         continue;
       }
       if (best < 0 || effective(int(i)) < effective(best)) best = int(i);
@@ -194,6 +205,17 @@ void ReconfigureProgram::onMotionEnded(Context& context, const MotionEnded& ende
   ++motions_;
   leavingFor_.reset();
   failedGoals_.clear();
+  // Counted only while the mover does not descend: a way down forgets the wandering before it.
+  if (standing_ != kUnknown && chosenDistance_ < standing_ && chosenVersion_ == standingVersion_) {
+    visited_.clear();
+  }
+  const auto here = std::find_if(visited_.begin(), visited_.end(),
+                                 [&](const auto& visit) { return visit.first == ended.cell; });
+  if (here != visited_.end()) {
+    ++here->second;
+  } else {
+    visited_.push_back({ended.cell, 1});
+  }
   standing_ = chosenDistance_;
   standingVersion_ = chosenVersion_;
   idleRounds_ = 0;

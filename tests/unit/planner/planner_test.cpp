@@ -118,20 +118,25 @@ TEST(Planner, PlansNothingWhenTheTargetIsBuilt) {
 }
 
 TEST(Planner, FreesAModuleThatWallsACellIn) {
-  // A floor with a hole in its middle, and one module on top: the hole's four neighbours on its
-  // layer wall it in, so one of them must move into it and leave its own cell to the mover.
+  // A square on a floor with a hole in its middle, and one module beside it: the hole's four
+  // neighbours on its layer wall it in, so one of them must move into it and leave its own cell
+  // to the mover.
   testing::WorldBuilder builder;
+  builder.box({0, 0, 0}, {8, 8, 1});
   std::vector<Cell> target;
   for (int y = 0; y < 8; ++y) {
-    for (int x = 0; x < 8; ++x) {
-      target.push_back({x, y, 0});
-      if (x != 3 || y != 3) builder.module({x, y, 0});
+    for (int x = 0; x < 8; ++x) target.push_back({x, y, 0});
+  }
+  for (int y = 2; y < 6; ++y) {
+    for (int x = 2; x < 6; ++x) {
+      target.push_back({x, y, 1});
+      if (x != 3 || y != 3) builder.module({x, y, 1});
     }
   }
   builder.module({6, 6, 1});
-  scene::ReshapeCase reshape{builder.build(), target, "a floor with a hole"};
+  scene::ReshapeCase reshape{builder.build(), target, "a square with a hole"};
   const Plan plan = expectPlanReplays(reshape, ModuleKind::kDatom);
-  EXPECT_GE(plan.modulesFreed, 1u);
+  EXPECT_GE(plan.modulesFreed, 1u) << plan.reason;
 }
 
 TEST(Planner, RefusesBadInput) {

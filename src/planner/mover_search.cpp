@@ -36,23 +36,10 @@ int GoalField::motionsAtLeast(const Cell& cell) const {
   return least;
 }
 
-void CellBox::add(const Cell& cell) {
-  if (low.x > high.x) {
-    low = high = cell;
-    return;
-  }
-  low = {std::min(low.x, cell.x), std::min(low.y, cell.y), std::min(low.z, cell.z)};
-  high = {std::max(high.x, cell.x), std::max(high.y, cell.y), std::max(high.z, cell.z)};
-}
-
-bool CellBox::near(const Cell& cell, int32_t margin) const {
-  return cell.x >= low.x - margin && cell.x <= high.x + margin && cell.y >= low.y - margin &&
-         cell.y <= high.y + margin && cell.z >= low.z - margin && cell.z <= high.z + margin;
-}
-
 namespace {
 
-// A cell the search has reached: the fewest motions known from the start, and the cell before.
+// A cell one mover's tree has reached: the fewest motions known from its start, and the cell
+// before.
 struct Node {
   Cell cell;
   int motions = 0;
@@ -60,17 +47,27 @@ struct Node {
   bool expanded = false;
 };
 
-// What waits in the queue: least total estimate first, then the nearest the goal (the deepest),
-// then cell order, so that the order of expansion, and the way found, never depend on chance.
+// One mover's tree.
+struct Tree {
+  ModuleId mover;
+  std::vector<Node> nodes;
+  world::CellIndex nodeOf;
+};
+
+// What waits in the shared queue: least estimate first, then the nearest the goal (the deepest),
+// then the mover's id and the cell, so that the order of expansion, and the way found, never
+// depend on chance.
 struct Waiting {
   int estimate;
   int remaining;
+  ModuleId mover;
   Cell cell;
+  uint32_t tree;
   uint32_t node;
   int motions;
   bool operator>(const Waiting& other) const {
-    return std::tie(estimate, remaining, cell) >
-           std::tie(other.estimate, other.remaining, other.cell);
+    return std::tie(estimate, remaining, mover, cell) >
+           std::tie(other.estimate, other.remaining, other.mover, other.cell);
   }
 };
 
@@ -93,72 +90,80 @@ void forEachNextCell(const world::World& world, const motion::MotionModel& model
 
 }  // namespace
 
-MoverSearch searchWay(const world::World& world, const motion::MotionModel& model, ModuleId mover,
-                      const GoalField& goals, int maxMotions) {
-  MoverSearch search;
-  search.explored.low = {1, 0, 0};  // empty box: low above high
-  search.explored.high = {0, 0, 0};
-  const world::Module* module = world.find(mover);
-  if (!module || goals.empty()) return search;
-  std::vector<Node> nodes;
-  world::CellIndex nodeOf;
+WaySearch nearestWay(const world::World& world, const motion::MotionModel& model,
+                     const std::vector<ModuleId>& movers, const GoalField& goals) {
+  WaySearch search;
+  if (goals.empty()) return search;
+  std::vector<Tree> trees;
+  trees.reserve(movers.size());
   std::priority_queue<Waiting, std::vector<Waiting>, std::greater<>> queue;
-  bool cutShort = false;
-  const auto reach = [&](const Cell& cell, int motions, uint32_t parent) {
-    const int remaining = goals.motionsAtLeast(cell);
-    if (motions + remaining > maxMotions) {
-      cutShort = true;
-      return;
-    }
+  const auto reach = [&](uint32_t t, const Cell& cell, int motions, uint32_t parent) {
+    Tree& tree = trees[t];
     const uint64_t key = world::packCell(cell);
     uint32_t index = 0;
-    if (const auto known = nodeOf.find(key)) {
+    if (const auto known = tree.nodeOf.find(key)) {
       index = *known;
-      if (nodes[index].expanded || nodes[index].motions <= motions) return;
-      nodes[index].motions = motions;
-      nodes[index].parent = parent;
+      if (tree.nodes[index].expanded || tree.nodes[index].motions <= motions) return;
+      tree.nodes[index].motions = motions;
+      tree.nodes[index].parent = parent;
     } else {
-      index = uint32_t(nodes.size());
-      nodeOf.insert(key, index);
-      nodes.push_back({cell, motions, parent, false});
+      index = uint32_t(tree.nodes.size());
+      tree.nodeOf.insert(key, index);
+      tree.nodes.push_back({cell, motions, parent, false});
     }
-    queue.push({motions + remaining, remaining, cell, index, motions});
+    const int remaining = goals.motionsAtLeast(cell);
+    queue.push({motions + remaining, remaining, tree.mover, cell, t, index, motions});
   };
-  reach(module->cell, 0, UINT32_MAX);
+  for (const ModuleId mover : movers) {
+    const world::Module* module = world.find(mover);
+    if (!module) continue;
+    trees.push_back({mover, {}, {}});
+    reach(uint32_t(trees.size() - 1), module->cell, 0, UINT32_MAX);
+  }
 
   // Expand in order of estimate; once a goal is found at `found` motions, finish the estimates up
-  // to it so that the smallest goal cell at that distance is the one kept.
-  std::optional<uint32_t> best;
+  // to it so that the smallest mover id, then goal cell, at that distance is the one kept.
+  std::optional<std::pair<uint32_t, uint32_t>> best;  // tree, node
   int found = std::numeric_limits<int>::max();
   while (!queue.empty()) {
     const Waiting next = queue.top();
     queue.pop();
     if (next.estimate > found) break;
-    Node& node = nodes[next.node];
+    Tree& tree = trees[next.tree];
+    Node& node = tree.nodes[next.node];
     if (node.expanded || next.motions != node.motions) continue;
     node.expanded = true;
     ++search.cellsExpanded;
-    search.explored.add(node.cell);
     if (goals.isGoal(node.cell)) {
-      if (!best || node.motions < found || node.cell < nodes[*best].cell) {
-        best = next.node;
+      const auto key = std::tie(node.motions, tree.mover, node.cell);
+      if (!best) {
+        best = {next.tree, next.node};
         found = node.motions;
+      } else {
+        const Tree& bestTree = trees[best->first];
+        const Node& bestNode = bestTree.nodes[best->second];
+        if (key < std::tie(bestNode.motions, bestTree.mover, bestNode.cell)) {
+          best = {next.tree, next.node};
+          found = node.motions;
+        }
       }
       continue;
     }
     const Cell from = node.cell;
     const int motions = node.motions;
-    forEachNextCell(world, model, mover, from,
-                    [&](const Cell& goal) { reach(goal, motions + 1, next.node); });
+    const uint32_t t = next.tree;
+    const uint32_t at = next.node;
+    forEachNextCell(world, model, tree.mover, from,
+                    [&](const Cell& goal) { reach(t, goal, motions + 1, at); });
   }
-  if (!best) {
-    search.exhausted = !cutShort && queue.empty();
-    return search;
+  if (!best) return search;
+  const Tree& tree = trees[best->first];
+  NearestWay way{tree.mover, {}};
+  for (uint32_t at = best->second; at != UINT32_MAX; at = tree.nodes[at].parent) {
+    way.cells.push_back(tree.nodes[at].cell);
   }
-  std::vector<Cell> way;
-  for (uint32_t at = *best; at != UINT32_MAX; at = nodes[at].parent) way.push_back(nodes[at].cell);
-  std::reverse(way.begin(), way.end());
-  search.path = std::move(way);
+  std::reverse(way.cells.begin(), way.cells.end());
+  search.best = std::move(way);
   return search;
 }
 

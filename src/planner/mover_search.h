@@ -8,7 +8,6 @@
 #pragma once
 
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <vector>
 
@@ -39,30 +38,28 @@ class GoalField {
   mutable world::CellIndex known_;  // cell -> motionsAtLeast, filled as asked
 };
 
-// A box of cells (both corners included).
-struct CellBox {
-  geometry::Cell low;
-  geometry::Cell high;
-  void add(const geometry::Cell& cell);
-  // Whether the cell lies within `margin` of the box on every axis.
-  bool near(const geometry::Cell& cell, int32_t margin) const;
+struct NearestWay {
+  ModuleId mover;
+  // The cells of the way, start first, goal last (the start alone when it is a goal).
+  std::vector<geometry::Cell> cells;
 };
 
-struct MoverSearch {
-  // The cells of the way, start first, goal last (the start alone when it is a goal): the goal is
-  // the smallest cell (x, then y, then z) among the nearest open cells.
-  std::optional<std::vector<geometry::Cell>> path;
-  // The search saw every cell the mover can reach and none is open (no bound cut it short).
-  bool exhausted = false;
+struct WaySearch {
+  // The shortest way of all the movers to an open cell, ties to the smallest mover id, then to
+  // the smallest goal cell (x, then y, then z); nullopt when no mover can reach one.
+  std::optional<NearestWay> best;
   uint64_t cellsExpanded = 0;
-  CellBox explored;  // the cells expanded
 };
 
-// Searches from the mover's cell for a way of at most `maxMotions` motions.
-MoverSearch searchWay(const world::World& world, const motion::MotionModel& model, ModuleId mover,
-                      const GoalField& goals, int maxMotions = std::numeric_limits<int>::max());
+// One best-first search (A*) for all the movers at once: each mover has its own tree of cells,
+// all share one queue ordered by the estimate (motions so far plus GoalField::motionsAtLeast),
+// so that no mover's tree grows past the estimate of the shortest way found: the work is that of
+// the cells that could still be on a shortest way, whatever the number of movers. Each tree is
+// judged with its mover taken out of the world; `world` is not changed.
+WaySearch nearestWay(const world::World& world, const motion::MotionModel& model,
+                     const std::vector<ModuleId>& movers, const GoalField& goals);
 
-// The motions along a way found by searchWay, each the first valid motion in table order from one
+// The motions along a way found by nearestWay, each the first valid motion in table order from one
 // cell of the way to the next, judged on the same world. nullopt if one is missing (the world
 // changed since the search).
 std::optional<std::vector<motion::Motion>> motionsAlong(const world::World& world,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <map>
 #include <optional>
@@ -22,10 +23,6 @@ namespace datomsim::planner {
 using geometry::Cell;
 
 namespace {
-
-// How far, in cells, a change of the world can change what a search saw: the rules look two
-// cells around the pivot, which is next to the mobile.
-constexpr int32_t kRuleReach = 3;
 
 std::string cellList(const std::vector<Cell>& cells, size_t named = 12) {
   std::string text;
@@ -48,12 +45,6 @@ void relocate(world::World& world, ModuleId id, const Cell& to) {
     if (world.neighbour(*world.find(id), d)) (void)world.setLatched(id, d, true);
   }
 }
-
-// A search that found no way at all, and the part of the world it looked at: it stays true until
-// a module moves, or a cell opens, near that part.
-struct Stuck {
-  CellBox explored;
-};
 
 // The state of the plan as it is made.
 class Planner {
@@ -79,21 +70,9 @@ class Planner {
   }
 
   Plan run() {
-    bool lookedAgain = false;
     while (!movers_.empty() && plan_.steps.size() < maxTrips_) {
-      if (takeBestTrip()) {
-        lookedAgain = false;
-        continue;
-      }
-      // Nothing found: the remembered dead ends may be stale; look again from scratch once, then
-      // free the modules that stand in the way; else the plan stops here.
-      if (!lookedAgain && !stuck_.empty()) {
-        stuck_.clear();
-        lookedAgain = true;
-        continue;
-      }
-      lookedAgain = false;
-      stuck_.clear();
+      if (takeBestTrip()) continue;
+      // No mover reaches an open cell: free the modules that stand in the way, or stop here.
       if (!freeModulesInTheWay()) break;
     }
     finish();
@@ -101,48 +80,81 @@ class Planner {
   }
 
  private:
-  // Finds the shortest trip of all movers and makes it; false when no mover can reach an open
-  // cell.
+  // Makes the next trip: a pocket filled by its neighbour when there is one, else the shortest
+  // trip of all movers. False when no mover can reach an open cell.
   bool takeBestTrip() {
-    const GoalField goals(progress_.openCells(world_), longest_);
-    if (goals.empty()) return false;
     const std::vector<bool> holdsTogether = articulationPoints(world_);
-    // The movers free to go, the nearest (by lower bound) first, then by id.
-    std::vector<std::tuple<int, ModuleId, Cell>> candidates;
-    for (const ModuleId id : movers_) {
-      if (holdsTogether[*world_.indexOf(id)] || stuck_.count(id)) continue;
-      const Cell cell = world_.find(id)->cell;
-      candidates.push_back({goals.motionsAtLeast(cell), id, cell});
-    }
-    std::sort(candidates.begin(), candidates.end());
-    std::optional<std::vector<Cell>> bestWay;
-    ModuleId bestMover;
-    int bestMotions = std::numeric_limits<int>::max();
-    for (const auto& candidate : candidates) {
-      const int atLeast = std::get<0>(candidate);
-      const ModuleId id = std::get<1>(candidate);
-      if (atLeast > bestMotions) break;
-      // A way as long as the best is better only for a smaller id.
-      const int allowed = !bestWay         ? std::numeric_limits<int>::max()
-                          : id < bestMover ? bestMotions
-                                           : bestMotions - 1;
-      if (atLeast > allowed) continue;
-      MoverSearch search = searchWay(world_, model_, id, goals, allowed);
-      plan_.cellsExpanded += search.cellsExpanded;
-      if (search.path) {
-        bestMotions = int(search.path->size()) - 1;
-        bestMover = id;
-        bestWay = std::move(search.path);
-      } else if (search.exhausted) {
-        stuck_[id] = Stuck{search.explored};
+    std::vector<Cell> enterable;
+    for (const Cell& cell : progress_.openCells(world_)) {
+      if (canBeEntered(cell)) {
+        enterable.push_back(cell);
+      } else if (fillPocket(cell, holdsTogether)) {
+        return true;
       }
     }
-    if (!bestWay) return false;
-    makeTrip(bestMover, *bestWay, goals);
+    const GoalField goals(std::move(enterable), longest_);
+    if (goals.empty()) return false;
+    std::vector<ModuleId> free;
+    for (const ModuleId id : movers_) {
+      if (!holdsTogether[*world_.indexOf(id)]) free.push_back(id);
+    }
+    WaySearch search = nearestWay(world_, model_, free, goals);
+    plan_.cellsExpanded += search.cellsExpanded;
+    if (!search.best) return false;
+    makeTrip(search.best->mover, search.best->cells);
     return true;
   }
 
-  void makeTrip(ModuleId mover, const std::vector<Cell>& way, const GoalField& before) {
+  // Whether some motion can end at the open cell now: from an empty cell, or a mover's, next to
+  // a pivot next to it. A cell that none can enter is a pocket (docs/reconfiguration.md): no
+  // search looks for it.
+  bool canBeEntered(const Cell& cell) const {
+    std::array<Cell, 6> goals;
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      const Cell pivotCell = cell + geometry::neighbourOffset(d);
+      if (!world_.moduleAt(pivotCell)) continue;
+      const uint16_t towardsCell = uint16_t(1u << geometry::oppositeDirection(d));
+      for (int e = 0; e < geometry::kDirectionCount; ++e) {
+        const Cell start = pivotCell + geometry::neighbourOffset(e);
+        if (start == cell || !world_.isInside(start)) continue;
+        const world::Module* there = world_.moduleAt(start);
+        if (there && !movers_.count(there->id)) continue;
+        const motion::Mobile mobile{start, there ? std::optional(there->id) : std::nullopt};
+        if (model_.goalsAsPivot(world_, pivotCell, mobile, towardsCell, goals) > 0) return true;
+      }
+    }
+    return false;
+  }
+
+  // The distributed program's pocket rule: a settled neighbour that one motion takes into the
+  // pocket moves there (the smallest id), and its own cell is to fill again, farther out. Each
+  // module fills one pocket at most, so that the hole never walks back.
+  bool fillPocket(const Cell& pocket, const std::vector<bool>& holdsTogether) {
+    std::optional<ModuleId> chosen;
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      const world::Module* there = world_.moduleAt(pocket + geometry::neighbourOffset(d));
+      if (!there || movers_.count(there->id) || filledAPocket_.count(there->id) ||
+          holdsTogether[*world_.indexOf(there->id)] || (chosen && *chosen < there->id)) {
+        continue;
+      }
+      const auto valid = model_.validMotions(world_, motion::Mobile{there->cell, there->id});
+      if (std::any_of(valid.begin(), valid.end(),
+                      [&](const motion::Motion& m) { return m.goal == pocket; })) {
+        chosen = there->id;
+      }
+    }
+    if (!chosen) return false;
+    const Cell from = world_.find(*chosen)->cell;
+    filledAPocket_.insert(*chosen);
+    placed_.erase(*chosen);
+    progress_.empty(*order_.indexOf(from));
+    movers_.insert(*chosen);
+    ++plan_.modulesFreed;
+    makeTrip(*chosen, {from, pocket});
+    return true;
+  }
+
+  void makeTrip(ModuleId mover, const std::vector<Cell>& way) {
     Step step{mover, way.front(), way.back(), {}};
     auto motions = motionsAlong(world_, model_, mover, way);
     // The search and the model judge the same world: a missing motion is a bug, kept visible.
@@ -156,47 +168,28 @@ class Planner {
     plan_.totalMotions += step.motions.size();
     if (!step.motions.empty()) plan_.motionsPerModule[mover] += step.motions.size();
     plan_.steps.push_back(std::move(step));
-    forgetStuckNear(way.front(), way.back(), before);
-  }
-
-  // A dead end stays one until the world changes near what its search saw: the trip's two ends,
-  // and the cells that the trip opened.
-  void forgetStuckNear(const Cell& from, const Cell& to, const GoalField& before) {
-    if (stuck_.empty()) return;
-    std::vector<Cell> changed{from, to};
-    for (const Cell& cell : progress_.openCells(world_)) {
-      if (!before.isGoal(cell)) changed.push_back(cell);
-    }
-    for (auto it = stuck_.begin(); it != stuck_.end();) {
-      const bool near = std::any_of(changed.begin(), changed.end(), [&](const Cell& cell) {
-        return it->second.explored.near(cell, kRuleReach);
-      });
-      it = near ? stuck_.erase(it) : std::next(it);
-    }
   }
 
   // Frees the modules settled where they started but out of the order of filling (a target cell
-  // before theirs is empty): they may wall in the cells before them. Those next to an empty
-  // target cell first; each module once. False when there is none left to free.
+  // before theirs is empty), which may wall in the cells before them; those next to an empty
+  // target cell first. Says whether it freed any.
   bool freeModulesInTheWay() {
     std::vector<ModuleId> outOfOrder, nextToEmpty;
     for (const ModuleId id : placed_) {
       const Cell cell = world_.find(id)->cell;
-      const uint32_t index = *order_.indexOf(cell);
-      const auto& before = order_.before(index);
+      const auto& before = order_.before(*order_.indexOf(cell));
       const bool waits = std::any_of(before.begin(), before.end(),
                                      [&](uint32_t b) { return !progress_.isFilled(b); });
       if (!waits) continue;
       outOfOrder.push_back(id);
-      for (int d = 0; d < geometry::kDirectionCount; ++d) {
-        const auto next = order_.indexOf(cell + geometry::neighbourOffset(d));
-        if (next && !progress_.isFilled(*next)) {
-          nextToEmpty.push_back(id);
-          break;
-        }
+      if (nextTo(cell, [&](const Cell& next) {
+            const auto index = order_.indexOf(next);
+            return index && !progress_.isFilled(*index);
+          })) {
+        nextToEmpty.push_back(id);
       }
     }
-    const std::vector<ModuleId>& freed = nextToEmpty.empty() ? outOfOrder : nextToEmpty;
+    std::vector<ModuleId> freed = nextToEmpty.empty() ? outOfOrder : nextToEmpty;
     for (const ModuleId id : freed) {
       placed_.erase(id);
       progress_.empty(*order_.indexOf(world_.find(id)->cell));
@@ -204,6 +197,14 @@ class Planner {
       ++plan_.modulesFreed;
     }
     return !freed.empty();
+  }
+
+  template <class Test>
+  static bool nextTo(const Cell& cell, Test test) {
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      if (test(cell + geometry::neighbourOffset(d))) return true;
+    }
+    return false;
   }
 
   void finish() {
@@ -242,7 +243,7 @@ class Planner {
   size_t maxTrips_;
   std::set<ModuleId> movers_;  // by id: the order of the candidates' ties
   std::set<ModuleId> placed_;  // settled where they started, not freed yet
-  std::map<ModuleId, Stuck> stuck_;
+  std::set<ModuleId> filledAPocket_;
   Plan plan_;
 };
 

@@ -21,7 +21,11 @@ int longestMotion(const motion::MotionModel& model) {
 }
 
 int motionsAtLeast(const Cell& from, const Cell& to, int longest) {
-  return (latticeDistance(from, to) + longest - 1) / longest;
+  if (longest <= 1) return latticeDistance(from, to);
+  const Cell offset = cubeFrame(to) - cubeFrame(from);
+  const auto magnitude = [](int64_t v) { return v < 0 ? -v : v; };
+  // Even for every cell of the lattice: the norm's parity is that of 2 (y + z).
+  return int((magnitude(offset.x) + magnitude(offset.y) + magnitude(offset.z) + 1) / 2);
 }
 
 int64_t minimumMatchingCost(const std::vector<int32_t>& costs, size_t n) {

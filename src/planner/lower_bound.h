@@ -21,11 +21,21 @@ constexpr int latticeDistance(const geometry::Cell& a, const geometry::Cell& b) 
   return int((magnitude(dx) + magnitude(dy) + magnitude(dx + dz) + magnitude(dy + dz)) / 2);
 }
 
-// The most lattice steps one motion covers: a roll goes to a neighbour of its start (1); a
-// Datom's goal and start are both neighbours of the pivot, and "ahead" puts them two steps apart.
+// The cell in the cube frame of geometry/lattice.h's axes, doubled so that it is an integer: the
+// 12 neighbour offsets become the permutations of (+-1, +-1, 0), twice a piston axis (+-2, 0, 0).
+constexpr geometry::Cell cubeFrame(const geometry::Cell& cell) {
+  return {cell.x + cell.y + cell.z, cell.y - cell.x, cell.z};
+}
+
+// The longest motion of a model: 1 when every motion goes to a neighbour of its start (a 3D
+// Catom's roll); 2 when a motion may also go twice a piston axis away (a Datom's "ahead": start
+// and goal are both neighbours of the pivot, on opposite sides of a piston axis).
 int longestMotion(const motion::MotionModel& model);
 
-// The fewest motions from `from` to `to` could take: ceil(distance / longestMotion).
+// The fewest motions that could take a mobile from `from` to `to`, whatever the world: the
+// lattice distance when motions go to neighbours (longest 1); else half the cube frame's L1 norm
+// of the offset, which no motion lowers by more than one (a neighbour offset and twice an axis
+// both have norm 2). The planner's heuristic and lower bound.
 int motionsAtLeast(const geometry::Cell& from, const geometry::Cell& to, int longest);
 
 // The least total cost of a perfect matching of rows to columns of a square matrix of costs
@@ -34,8 +44,8 @@ int64_t minimumMatchingCost(const std::vector<int32_t>& costs, size_t n);
 
 // The plan's lower bound: each module off the target is matched to an empty target cell, at the
 // cost motionsAtLeast, and the least total is returned. No sequential plan does better: every
-// module ends on a target cell, and as the cost is a metric of the lattice (ceil of a distance
-// over a constant), modules already on target cells may as well stay in the cheapest matching.
+// module ends on a target cell, and as the cost is a metric of the lattice, modules already on
+// target cells may as well stay in the cheapest matching.
 // Precondition: as many modules off the target as empty target cells.
 size_t matchingLowerBound(const world::World& world, const std::vector<geometry::Cell>& target,
                           int longest);

@@ -60,7 +60,25 @@ TEST(MinimumMatching, EqualsTheBestOfEveryPermutation) {
 TEST(LowerBound, TheLongestMotionIsTwoStepsForADatomAndOneForARoll) {
   EXPECT_EQ(longestMotion(*testing::modelOf(world::ModuleKind::kDatom)), 2);
   EXPECT_EQ(longestMotion(*testing::modelOf(world::ModuleKind::kCatom3D)), 1);
-  EXPECT_EQ(motionsAtLeast({0, 0, 1}, {5, 0, 1}, 2), 3);
+  // Along a row of a layer, a Datom goes one cell per motion; across the diagonal, two.
+  EXPECT_EQ(motionsAtLeast({0, 0, 1}, {5, 0, 1}, 2), 5);
+  EXPECT_EQ(motionsAtLeast({0, 0, 1}, {5, 5, 1}, 2), 5);
+  EXPECT_EQ(motionsAtLeast({0, 0, 1}, {5, 0, 1}, 1), 5);
+}
+
+TEST(LowerBound, NoMotionOfEitherModelGoesFurtherThanOneStepOfTheBound) {
+  // The search's heuristic and the plan's lower bound count on it.
+  for (const motion::Rule& rule : testing::ruleTable().rules()) {
+    EXPECT_LE(motionsAtLeast(rule.mobileOffset, rule.goalOffset, 2), 1) << "rule " << rule.index;
+  }
+  const catom3d::RollTable rolls;
+  for (const catom3d::Roll& roll : rolls.all()) {
+    EXPECT_LE(motionsAtLeast(roll.mobileOffset, roll.goalOffset, 1), 1) << "roll " << roll.index;
+  }
+  for (int d = 0; d < geometry::kDirectionCount; ++d) {
+    const Cell cube = cubeFrame(geometry::neighbourOffset(d));
+    EXPECT_EQ(std::abs(cube.x) + std::abs(cube.y) + std::abs(cube.z), 2);
+  }
 }
 
 TEST(LowerBound, MatchesTheLineToTheBlock) {

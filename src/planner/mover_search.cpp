@@ -121,33 +121,23 @@ WaySearch nearestWay(const world::World& world, const motion::MotionModel& model
     reach(uint32_t(trees.size() - 1), module->cell, 0, UINT32_MAX);
   }
 
-  // Expand in order of estimate; once a goal is found at `found` motions, finish the estimates up
-  // to it so that the smallest mover id, then goal cell, at that distance is the one kept.
+  // Expand in order of estimate: the first goal taken from the queue ends a shortest way (the
+  // heuristic is consistent). Among the shortest, it is the first in the queue's order: fewest
+  // motions left by the estimate, then smallest mover id, then smallest cell. Looking further for
+  // a smaller id among ways as short would expand every cell of every tree at that estimate: on
+  // a slab, where many ways tie, most of the work.
   std::optional<std::pair<uint32_t, uint32_t>> best;  // tree, node
-  int found = std::numeric_limits<int>::max();
   while (!queue.empty()) {
     const Waiting next = queue.top();
     queue.pop();
-    if (next.estimate > found) break;
     Tree& tree = trees[next.tree];
     Node& node = tree.nodes[next.node];
     if (node.expanded || next.motions != node.motions) continue;
     node.expanded = true;
     ++search.cellsExpanded;
     if (goals.isGoal(node.cell)) {
-      const auto key = std::tie(node.motions, tree.mover, node.cell);
-      if (!best) {
-        best = {next.tree, next.node};
-        found = node.motions;
-      } else {
-        const Tree& bestTree = trees[best->first];
-        const Node& bestNode = bestTree.nodes[best->second];
-        if (key < std::tie(bestNode.motions, bestTree.mover, bestNode.cell)) {
-          best = {next.tree, next.node};
-          found = node.motions;
-        }
-      }
-      continue;
+      best = {next.tree, next.node};
+      break;
     }
     const Cell from = node.cell;
     const int motions = node.motions;

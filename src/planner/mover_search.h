@@ -45,8 +45,9 @@ struct NearestWay {
 };
 
 struct WaySearch {
-  // The shortest way of all the movers to an open cell, ties to the smallest mover id, then to
-  // the smallest goal cell (x, then y, then z); nullopt when no mover can reach one.
+  // A shortest way of all the movers to an open cell, the first the search finds (ties go to the
+  // way whose goal came into view first, then to the smallest mover id, then to the smallest
+  // goal cell); nullopt when no mover can reach one.
   std::optional<NearestWay> best;
   uint64_t cellsExpanded = 0;
 };

@@ -27,8 +27,8 @@ class GoalField {
   bool isGoal(const geometry::Cell& cell) const;
   bool empty() const { return open_.empty(); }
   const std::vector<geometry::Cell>& cells() const { return open_; }
-  // ceil(lattice distance to the nearest open cell / the longest motion): never more than the
-  // motions needed, and it drops by at most one per motion (the search needs both).
+  // planner::motionsAtLeast to the nearest open cell: never more than the motions needed, and it
+  // drops by at most one per motion (the search needs both).
   int motionsAtLeast(const geometry::Cell& cell) const;
 
  private:

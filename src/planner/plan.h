@@ -28,7 +28,7 @@ struct PlannedMotion {
 };
 
 // One trip: `module` goes from `from` to the target cell `to` by `motions`, in order. A module
-// already on a target cell that is open settles there in a trip of no motion.
+// freed from its target cell that finds it open again settles there in a trip of no motion.
 struct Step {
   ModuleId module;
   geometry::Cell from;
@@ -65,7 +65,7 @@ struct Plan {
   // Motions made by each module that moved (modules that never moved are absent).
   std::map<ModuleId, size_t> motionsPerModule;
   // No sequential plan makes fewer motions: the minimum over matchings of the modules off the
-  // target to the empty target cells of the sum of ceil(lattice distance / the longest motion).
+  // target to the empty target cells of the sum of planner::motionsAtLeast (lower_bound.h).
   size_t lowerBound = 0;
   // Work done: the cells the searches expanded, and the modules freed from a target cell
   // because a cell could not be reached otherwise.

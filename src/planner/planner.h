@@ -6,10 +6,11 @@
 //
 // Each trip, the planner takes, among the modules that may move (not on a filled target cell, and
 // not holding the ensemble together: planner/articulation.h), the one with the shortest valid way
-// to an open target cell (planner/fill_order.h), ties to the smallest module id and then the
-// smallest cell: a greedy of shortest paths (planner/mover_search.h). A module that sits on a
-// target cell stays unless no module can reach the cells left: then the ones out of the order of
-// filling are freed to move on.
+// to an open target cell (planner/fill_order.h): a greedy of shortest paths
+// (planner/mover_search.h, which says how ties go). A module that sits on a target cell stays
+// unless it is needed elsewhere: a settled neighbour of an open cell that no motion can enter (a
+// pocket) moves into it, and when no module can reach the cells left, the modules settled where
+// they started but out of the order of filling are freed to move on.
 #pragma once
 
 #include <cstddef>

@@ -72,8 +72,10 @@ class Planner {
   Plan run() {
     while (!movers_.empty() && plan_.steps.size() < maxTrips_) {
       if (takeBestTrip()) continue;
-      // No mover reaches an open cell: free the modules that stand in the way, or stop here.
-      if (!freeModulesInTheWay()) break;
+      // No mover reaches an open cell: a settled neighbour of one moves in, as into a pocket; or
+      // the modules that stand in the way are freed; or the plan stops here.
+      if (fillAnUnreachableCell() || freeModulesInTheWay()) continue;
+      break;
     }
     finish();
     return std::move(plan_);
@@ -168,6 +170,16 @@ class Planner {
     plan_.totalMotions += step.motions.size();
     if (!step.motions.empty()) plan_.motionsPerModule[mover] += step.motions.size();
     plan_.steps.push_back(std::move(step));
+  }
+
+  // The pocket rule for the open cells no mover reaches: the first that a settled neighbour
+  // fills.
+  bool fillAnUnreachableCell() {
+    const std::vector<bool> holdsTogether = articulationPoints(world_);
+    for (const Cell& cell : progress_.openCells(world_)) {
+      if (!world_.moduleAt(cell) && fillPocket(cell, holdsTogether)) return true;
+    }
+    return false;
   }
 
   // Frees the modules settled where they started but out of the order of filling (a target cell

@@ -43,7 +43,8 @@ FillOrder::FillOrder(const std::vector<Cell>& target) : cells_(target) {
   std::sort(cells_.begin(), cells_.end());
   indexByCell_.reserve(cells_.size());
   for (uint32_t i = 0; i < cells_.size(); ++i) indexByCell_.insert(world::packCell(cells_[i]), i);
-  const std::vector<double> ranks = ranksOf(cells_);
+  ranks_ = ranksOf(cells_);
+  const std::vector<double>& ranks = ranks_;
   before_.resize(cells_.size());
   after_.resize(cells_.size());
   for (uint32_t i = 0; i < cells_.size(); ++i) {

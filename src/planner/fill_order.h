@@ -34,11 +34,14 @@ class FillOrder {
   const std::vector<geometry::Cell>& cells() const { return cells_; }
   std::optional<uint32_t> indexOf(const geometry::Cell& cell) const;
   const std::vector<uint32_t>& before(uint32_t index) const { return before_[index]; }
+  // Rule 4's rank: the squared distance from the centre of the cell's layer.
+  double rank(uint32_t index) const { return ranks_[index]; }
   const std::vector<uint32_t>& after(uint32_t index) const { return after_[index]; }
 
  private:
   std::vector<geometry::Cell> cells_;
   world::CellIndex indexByCell_;
+  std::vector<double> ranks_;
   std::vector<std::vector<uint32_t>> before_;
   std::vector<std::vector<uint32_t>> after_;
 };

@@ -24,6 +24,9 @@ using geometry::Cell;
 
 namespace {
 
+// The directions that stay on a layer.
+constexpr std::array<int, 4> kOnLayer = {0, 1, 6, 7};
+
 std::string cellList(const std::vector<Cell>& cells, size_t named = 12) {
   std::string text;
   for (size_t i = 0; i < std::min(cells.size(), named); ++i) {
@@ -86,15 +89,18 @@ class Planner {
   // trip of all movers. False when no mover can reach an open cell.
   bool takeBestTrip() {
     const std::vector<bool> holdsTogether = articulationPoints(world_);
-    std::vector<Cell> enterable;
+    std::vector<Cell> goalCells;
     for (const Cell& cell : progress_.openCells(world_)) {
-      if (canBeEntered(cell)) {
-        enterable.push_back(cell);
-      } else if (fillPocket(cell, holdsTogether)) {
-        return true;
-      }
+      // A cell walled in on its layer is filled by a neighbour when one can: movers rarely find
+      // the one way in from above, if there is one.
+      const bool walled = std::all_of(kOnLayer.begin(), kOnLayer.end(), [&](int d) {
+        return world_.moduleAt(cell + geometry::neighbourOffset(d)) != nullptr;
+      });
+      const bool enterable = canBeEntered(cell, holdsTogether);
+      if ((walled || !enterable) && fillPocket(cell, holdsTogether)) return true;
+      if (enterable) goalCells.push_back(cell);
     }
-    const GoalField goals(std::move(enterable), longest_);
+    const GoalField goals(std::move(goalCells), longest_);
     if (goals.empty()) return false;
     std::vector<ModuleId> free;
     for (const ModuleId id : movers_) {
@@ -107,10 +113,10 @@ class Planner {
     return true;
   }
 
-  // Whether some motion can end at the open cell now: from an empty cell, or a mover's, next to
-  // a pivot next to it. A cell that none can enter is a pocket (docs/reconfiguration.md): no
-  // search looks for it.
-  bool canBeEntered(const Cell& cell) const {
+  // Whether some motion can end at the open cell now: from an empty cell, or the cell of a mover
+  // free to move, next to a pivot next to it. A cell that none can enter is a pocket
+  // (docs/reconfiguration.md): no search looks for it.
+  bool canBeEntered(const Cell& cell, const std::vector<bool>& holdsTogether) const {
     std::array<Cell, 6> goals;
     for (int d = 0; d < geometry::kDirectionCount; ++d) {
       const Cell pivotCell = cell + geometry::neighbourOffset(d);
@@ -120,7 +126,9 @@ class Planner {
         const Cell start = pivotCell + geometry::neighbourOffset(e);
         if (start == cell || !world_.isInside(start)) continue;
         const world::Module* there = world_.moduleAt(start);
-        if (there && !movers_.count(there->id)) continue;
+        if (there && (!movers_.count(there->id) || holdsTogether[*world_.indexOf(there->id)])) {
+          continue;
+        }
         const motion::Mobile mobile{start, there ? std::optional(there->id) : std::nullopt};
         if (model_.goalsAsPivot(world_, pivotCell, mobile, towardsCell, goals) > 0) return true;
       }
@@ -129,16 +137,23 @@ class Planner {
   }
 
   // The distributed program's pocket rule: a settled neighbour that one motion takes into the
-  // pocket moves there (the smallest id), and its own cell is to fill again, farther out. Each
-  // module fills one pocket at most, so that the hole never walks back.
+  // pocket moves there (the smallest id), and its own cell is to fill again. The hole only walks
+  // out: to a neighbour on the layer farther from its centre (higher rank), or one layer up, so
+  // that it never comes back.
   bool fillPocket(const Cell& pocket, const std::vector<bool>& holdsTogether) {
+    const double pocketRank = order_.rank(*order_.indexOf(pocket));
     std::optional<ModuleId> chosen;
     for (int d = 0; d < geometry::kDirectionCount; ++d) {
-      const world::Module* there = world_.moduleAt(pocket + geometry::neighbourOffset(d));
-      if (!there || movers_.count(there->id) || filledAPocket_.count(there->id) ||
-          holdsTogether[*world_.indexOf(there->id)] || (chosen && *chosen < there->id)) {
+      const Cell cell = pocket + geometry::neighbourOffset(d);
+      const world::Module* there = world_.moduleAt(cell);
+      if (!there || movers_.count(there->id) || holdsTogether[*world_.indexOf(there->id)] ||
+          (chosen && *chosen < there->id)) {
         continue;
       }
+      const auto index = order_.indexOf(cell);
+      const bool outwards =
+          index && (cell.z > pocket.z || (cell.z == pocket.z && order_.rank(*index) > pocketRank));
+      if (!outwards) continue;
       const auto valid = model_.validMotions(world_, motion::Mobile{there->cell, there->id});
       if (std::any_of(valid.begin(), valid.end(),
                       [&](const motion::Motion& m) { return m.goal == pocket; })) {
@@ -147,7 +162,6 @@ class Planner {
     }
     if (!chosen) return false;
     const Cell from = world_.find(*chosen)->cell;
-    filledAPocket_.insert(*chosen);
     placed_.erase(*chosen);
     progress_.empty(*order_.indexOf(from));
     movers_.insert(*chosen);
@@ -255,7 +269,6 @@ class Planner {
   size_t maxTrips_;
   std::set<ModuleId> movers_;  // by id: the order of the candidates' ties
   std::set<ModuleId> placed_;  // settled where they started, not freed yet
-  std::set<ModuleId> filledAPocket_;
   Plan plan_;
 };
 

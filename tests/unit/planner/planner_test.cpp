@@ -56,11 +56,25 @@ TEST(Planner, BuildsRandomSlabs) {
     ASSERT_TRUE(reshape.ok()) << reshape.error();
     expectPlanReplays(*reshape, ModuleKind::kDatom);
   }
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    auto reshape = scene::randomReshape(16, 16, 50, seed);
+    ASSERT_TRUE(reshape.ok()) << reshape.error();
+    expectPlanReplays(*reshape, ModuleKind::kDatom);
+  }
   for (uint64_t seed = 1; seed <= 3; ++seed) {
     auto reshape = scene::randomReshape(10, 10, 20, seed);
     ASSERT_TRUE(reshape.ok()) << reshape.error();
     expectPlanReplays(*reshape, ModuleKind::kDatom);
   }
+}
+
+TEST(Planner, FillsPocketsOnALargerRandomSlab) {
+  // 167 movers on a 30x30 slab: cells walled in on their layer are filled by a neighbour.
+  auto reshape = scene::randomReshape(30, 30, 200, 5);
+  ASSERT_TRUE(reshape.ok()) << reshape.error();
+  const Plan plan = expectPlanReplays(*reshape, ModuleKind::kDatom);
+  EXPECT_GT(plan.modulesFreed, 0u);
+  EXPECT_EQ(plan.steps.size(), 167u + plan.modulesFreed);
 }
 
 TEST(Planner, BuildsAPyramidFromTheCornerBlock) {
@@ -70,7 +84,7 @@ TEST(Planner, BuildsAPyramidFromTheCornerBlock) {
 }
 
 TEST(Planner, BuildsRandomSlabsOf3DCatoms) {
-  for (uint64_t seed = 1; seed <= 4; ++seed) {
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
     auto reshape = scene::randomReshape(8, 8, 10, seed);
     ASSERT_TRUE(reshape.ok()) << reshape.error();
     expectPlanReplays(*reshape, ModuleKind::kCatom3D);

@@ -57,6 +57,8 @@ void addCompareCommand(CLI::App& app, const Reporter& reporter);
 void addRunCommand(CLI::App& app, const Reporter& reporter,
                    std::span<const ProgramEntry> added = {});
 void addDemoCommand(CLI::App& app, const Reporter& reporter);
+// The centralised planner of a reconfiguration.
+void addPlanCommand(CLI::App& app, const Reporter& reporter);
 void addViewCommand(CLI::App& app, const Reporter& reporter);
 void addMeshCommand(CLI::App& app, const Reporter& reporter);
 void addVideoCommand(CLI::App& app, const Reporter& reporter);

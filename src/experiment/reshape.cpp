@@ -18,16 +18,6 @@ size_t filledCount(const world::World& world, const std::vector<Cell>& target) {
                               [&](const Cell& cell) { return world.moduleAt(cell) != nullptr; }));
 }
 
-std::string cellList(const std::vector<Cell>& cells, size_t named = 12) {
-  std::string text;
-  for (size_t i = 0; i < std::min(cells.size(), named); ++i) {
-    if (i) text += ' ';
-    text += geometry::toString(cells[i]);
-  }
-  if (cells.size() > named) text += fmt::format(" and {} more", cells.size() - named);
-  return text;
-}
-
 // The missing cells no module that has not settled could reach, were it alone on the settled
 // modules (motion::reach from each missing cell).
 std::vector<Cell> unreachable(const world::World& world, const motion::RuleTable& table,
@@ -60,6 +50,16 @@ ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int
     limits.timeout = (3600 + 10 * Time(modules)) * kSecond * share;
   }
   return limits;
+}
+
+std::string cellList(const std::vector<Cell>& cells, size_t named) {
+  std::string text;
+  for (size_t i = 0; i < std::min(cells.size(), named); ++i) {
+    if (i) text += ' ';
+    text += geometry::toString(cells[i]);
+  }
+  if (cells.size() > named) text += fmt::format(" and {} more", cells.size() - named);
+  return text;
 }
 
 ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& table,

@@ -7,6 +7,8 @@
 #include <string_view>
 
 #include "algorithms/registry.h"
+#include "catom3d/catom_rolls.h"
+#include "planner/planner.h"
 #include "record/trace_writer.h"
 
 namespace datomsim::experiment {
@@ -180,6 +182,16 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
       if (!world.isInside(cell)) {
         return Error{"target cell " + toString(cell) + " " + world.bounds().whyOutside(cell)};
       }
+    }
+    // A target that cannot be built is said so before anything runs, with the cells that prove it.
+    const auto model = catom3d::motionModelFor(
+        request.simulation.moduleKind, table, request.simulation.rules, request.simulation.rolling);
+    const planner::Infeasibility proof = planner::provenInfeasible(world, target, *model);
+    if (!proof.neverEntered.empty()) {
+      return Error{
+          fmt::format("the target cannot be built: no motion can ever enter its cells {} (docs/"
+                      "reconfiguration.md, \"Infeasible cases\")",
+                      cellList(proof.neverEntered))};
     }
     shape = std::make_shared<algorithms::TargetShape>(target);
     const auto movers = size_t(

@@ -113,5 +113,18 @@ TEST(Reconfigure, RefusesATargetOfAnotherSizeOrNone) {
   EXPECT_NE(none.error().find("needs a target"), std::string::npos) << none.error();
 }
 
+// A target that no motion can complete is refused before the run, the cells named: in a world one
+// layer high, every Datom motion needs a cell of another layer.
+TEST(Reconfigure, ATargetNoMotionCanEnterIsRefusedBeforeTheRun) {
+  testing::WorldBuilder builder(world::Bounds{Cell{6, 3, 1}});
+  builder.modules({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}});
+  const auto run = experiment::runProgram(builder.build(), table(),
+                                          reconfigure({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}));
+  ASSERT_FALSE(run.ok());
+  EXPECT_EQ(run.error(),
+            "the target cannot be built: no motion can ever enter its cells 1,1,0 "
+            "(docs/reconfiguration.md, \"Infeasible cases\")");
+}
+
 }  // namespace
 }  // namespace datomsim::algorithms

@@ -81,7 +81,8 @@ void refuseOtherKindsOptions(const CLI::App& command, world::ModuleKind kind,
                              std::initializer_list<const char*> datomOptions) {
   if (kind == world::ModuleKind::kCatom3D) {
     for (const char* option : datomOptions) {
-      if (command.count(option) > 0) {
+      // A command may take only some of them (`plan` has no --attachment).
+      if (command.get_option_no_throw(option) && command.count(option) > 0) {
         throw UsageError(fmt::format(
             "{} is a Datom rule option; the modules here are 3D Catoms, whose rolls take "
             "--rolling (or say --module datom)",

@@ -10,36 +10,41 @@
 
 namespace datomsim::app {
 
+namespace {
+
+struct PlanCommandArguments {
+  frontend::PlanArguments plan;
+  std::string rules = "paper";
+  ModuleArguments module;
+};
+
+}  // namespace
+
 void addPlanCommand(CLI::App& app, const Reporter& reporter) {
-  auto args = std::make_shared<frontend::PlanArguments>();
+  auto args = std::make_shared<PlanCommandArguments>();
   CLI::App* command = app.add_subcommand(
       "plan",
       "Plan the reconfiguration of a scene into its target centrally: one module and one motion "
       "at a time, shortest valid ways, the ensemble kept in one piece (a baseline)");
-  command->add_option("scene", args->scene, "Scene file (.xml or .json) with a target")->required();
-  command->add_option("--target", args->target,
+  command->add_option("scene", args->plan.scene, "Scene file (.xml or .json) with a target")
+      ->required();
+  command->add_option("--target", args->plan.target,
                       "Take the target from this scene file instead of the scene's own");
   command->add_option("--rules", args->rules, "The Datom's rule set: paper or strict")
       ->check(CLI::IsMember({"paper", "strict"}))
       ->capture_default_str();
-  command
-      ->add_option("--module", args->module,
-                   "The modules: datom or catom3d (default: the scene file's)")
-      ->check(CLI::IsMember({"datom", "catom3d"}));
-  command
-      ->add_option("--rolling", args->rolling,
-                   "The 3D Catom's rules: symmetric or visiblesim (docs/catom3d.md)")
-      ->check(CLI::IsMember({"symmetric", "visiblesim"}))
-      ->capture_default_str();
-  addOutputOption(*command, args->out);
+  args->module.addTo(*command);
+  addOutputOption(*command, args->plan.out);
   addExample(*command, "plan scenes/reshape-heap.json --out plan.json");
-  command->callback([args, command, &reporter] {
-    refuseClashes({{"scene", args->scene}, {"--target", args->target}}, {{"--out", args->out}});
-    io::Scene scene = unwrap(io::readScene(args->scene));
-    refuseOtherKindsOptions(*command, kindFor(args->module, scene), {"--rules"});
-    const frontend::PlanOutput output = frontend::planOnScene(std::move(scene), *args);
+  command->callback([args, &reporter] {
+    const frontend::PlanArguments& given = args->plan;
+    refuseClashes({{"scene", given.scene}, {"--target", given.target}}, {{"--out", given.out}});
+    io::Scene scene = unwrap(io::readScene(given.scene));
+    // Attachment and connectivity are on whatever is given: planOnScene sets them.
+    const MotionChoice choice = args->module.modelFor(scene, {args->rules, "on", "on"});
+    const frontend::PlanOutput output = frontend::planOnScene(std::move(scene), given, choice);
     writeOutput(
-        args->out, [&](std::FILE* file) { return frontend::writePlanJson(output, file); },
+        given.out, [&](std::FILE* file) { return frontend::writePlanJson(output, file); },
         reporter);
     const planner::Plan& plan = output.plan;
     reporter.note(planner::summary(plan));

@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <set>
 
+#include "geometry/cell_text.h"
 #include "motion/reach.h"
 
 namespace datomsim::experiment {
+
+using geometry::cellList;
 
 using geometry::Cell;
 
@@ -50,16 +53,6 @@ ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int
     limits.timeout = (3600 + 10 * Time(modules)) * kSecond * share;
   }
   return limits;
-}
-
-std::string cellList(const std::vector<Cell>& cells, size_t named) {
-  std::string text;
-  for (size_t i = 0; i < std::min(cells.size(), named); ++i) {
-    if (i) text += ' ';
-    text += geometry::toString(cells[i]);
-  }
-  if (cells.size() > named) text += fmt::format(" and {} more", cells.size() - named);
-  return text;
 }
 
 ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& table,

@@ -41,9 +41,6 @@ struct ReshapeOutcome {
   std::vector<geometry::Cell> extra;    // occupied cells outside the target
 };
 
-// "1,2,3 4,5,6 and 7 more": the first `named` cells of a list, for messages.
-std::string cellList(const std::vector<geometry::Cell>& cells, size_t named = 12);
-
 // Runs the simulation until the target is built or the run stops, and says which.
 ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& table,
                             const std::vector<geometry::Cell>& target,

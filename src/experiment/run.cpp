@@ -8,10 +8,13 @@
 
 #include "algorithms/registry.h"
 #include "catom3d/catom_rolls.h"
+#include "geometry/cell_text.h"
 #include "planner/planner.h"
 #include "record/trace_writer.h"
 
 namespace datomsim::experiment {
+
+using geometry::cellList;
 
 using geometry::Cell;
 using geometry::toString;

@@ -57,16 +57,10 @@ void streamPlanJson(const PlanOutput& output, JsonObjectStream::Emit emit) {
 
 }  // namespace
 
-PlanOutput planOnScene(io::Scene scene, const PlanArguments& args) {
-  if (!args.module.empty()) {
-    const auto kind = world::moduleKindNamed(args.module);
-    if (!kind) throw UsageError("--module: " + args.module + " not in {datom,catom3d}");
-    scene.moduleKind = *kind;
-  }
-  const auto rolling = catom3d::rollRulesNamed(args.rolling);
-  if (!rolling) throw UsageError("--rolling: " + args.rolling + " not in {symmetric,visiblesim}");
-  // The options a reconfiguration runs with: attachment and connectivity on.
-  const MotionChoice choice{scene.moduleKind, parseRuleOptions(args.rules, "on", "on"), *rolling};
+PlanOutput planOnScene(io::Scene scene, const PlanArguments& args, MotionChoice choice) {
+  // The options a reconfiguration runs with, whatever was given.
+  choice.datom.attachment = true;
+  choice.datom.connectivity = true;
   const std::vector<target::Target>& targets =
       args.target.empty() ? scene.targets : unwrap(io::readScene(args.target)).targets;
   if (targets.empty()) {

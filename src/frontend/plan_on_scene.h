@@ -14,13 +14,10 @@
 
 namespace datomsim::frontend {
 
-// What `plan` takes, as the command line spells it.
+// What `plan` takes, as the command line spells it; the motion model comes apart (MotionChoice),
+// its Datom's options overridden: a reconfiguration runs with attachment and connectivity on.
 struct PlanArguments {
   std::string scene, target, out;
-  // The modules' kind (empty: the scene's) and the 3D Catom's rule set.
-  std::string module;
-  std::string rolling = "symmetric";
-  std::string rules = "paper";
 };
 
 struct PlanOutput {
@@ -31,7 +28,7 @@ struct PlanOutput {
 
 // Refuses (UsageError) a scene without a target, a target of another size than the scene, and
 // bad option values; an infeasible case is a plan whose success is false, with its reason.
-PlanOutput planOnScene(io::Scene scene, const PlanArguments& args);
+PlanOutput planOnScene(io::Scene scene, const PlanArguments& args, MotionChoice choice);
 
 // The plan as JSON: the whole text, or streamed to an open file.
 std::string planJson(const PlanOutput& output);

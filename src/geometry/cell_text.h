@@ -1,10 +1,13 @@
-// A cell as people type it: "x,y,z", also "(x,y,z)" as pictures and logs print cells, and with
-// spaces around the numbers. One reading for the command line and program parameters alike.
+// A cell as people type it, and lists of cells as messages print them: "x,y,z", also "(x,y,z)" as
+// pictures and logs print cells, and with spaces around the numbers. One reading for the command
+// line and program parameters alike.
 #pragma once
 
 #include <charconv>
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 
 #include "geometry/cell.h"
@@ -35,6 +38,17 @@ inline std::optional<Cell> cellFromText(std::string_view text) {
     text = i < 2 ? text.substr(comma + 1) : std::string_view();
   }
   return Cell{parts[0], parts[1], parts[2]};
+}
+
+// "1,2,3 4,5,6 and 7 more": the first `named` cells of a list, for messages.
+inline std::string cellList(std::span<const Cell> cells, size_t named = 12) {
+  std::string text;
+  for (size_t i = 0; i < cells.size() && i < named; ++i) {
+    if (i) text += ' ';
+    text += toString(cells[i]);
+  }
+  if (cells.size() > named) text += " and " + std::to_string(cells.size() - named) + " more";
+  return text;
 }
 
 }  // namespace datomsim::geometry

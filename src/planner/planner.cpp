@@ -12,6 +12,7 @@
 #include <tuple>
 #include <utility>
 
+#include "geometry/cell_text.h"
 #include "geometry/lattice.h"
 #include "planner/articulation.h"
 #include "planner/fill_order.h"
@@ -22,20 +23,12 @@ namespace datomsim::planner {
 
 using geometry::Cell;
 
+using geometry::cellList;
+
 namespace {
 
 // The directions that stay on a layer.
 constexpr std::array<int, 4> kOnLayer = {0, 1, 6, 7};
-
-std::string cellList(const std::vector<Cell>& cells, size_t named = 12) {
-  std::string text;
-  for (size_t i = 0; i < std::min(cells.size(), named); ++i) {
-    if (i) text += ' ';
-    text += geometry::toString(cells[i]);
-  }
-  if (cells.size() > named) text += fmt::format(" and {} more", cells.size() - named);
-  return text;
-}
 
 // Moves a module at rest to another cell, its latches following: released at the start, made
 // with every neighbour at the goal, as the simulator leaves a module at rest after a motion.

@@ -121,5 +121,50 @@ TEST_F(ReconfigureCommand, OneMotionAtATimeIsTheSequentialBaseline) {
   EXPECT_GT(one["makespan_s"].get<double>(), 2 * all["makespan_s"].get<double>());
 }
 
+// The centralised planner on the same scenes: a plan no shorter than its bound and fewer motions
+// than the distributed program, its trips replaying into the target; a case without a target
+// refused, and one that stops written with its cells, then failed.
+TEST_F(ReconfigureCommand, PlanGivesTheBaselineOrTheCellsItCannotFill) {
+  const Outcome planned =
+      datomsim("plan " + projectScene("reshape-heap.json") + " --out " + path("plan.json"));
+  ASSERT_EQ(planned.status, 0) << planned.output;
+  EXPECT_NE(planned.output.find("39 trips"), std::string::npos) << planned.output;
+  const auto plan = nlohmann::json::parse(readText(path("plan.json")));
+  EXPECT_EQ(plan["success"], true);
+  EXPECT_GE(plan["motions"], plan["lower_bound"]);
+  size_t motions = 0;
+  for (const auto& step : plan["steps"]) motions += step["motions"].size();
+  EXPECT_EQ(plan["motions"], motions);
+  const Outcome distributed = datomsim("run " + projectScene("reshape-heap.json") +
+                                       " --program reconfigure --out " + path("run.json"));
+  ASSERT_EQ(distributed.status, 0) << distributed.output;
+  EXPECT_LT(plan["motions"], nlohmann::json::parse(readText(path("run.json")))["motions"]);
+
+  const Outcome noTarget =
+      datomsim("plan " + projectScene("paper-arch-hole2.json") + " --out " + path("none.json"));
+  EXPECT_EQ(noTarget.status, 1);
+  EXPECT_NE(noTarget.output.find("has no target"), std::string::npos) << noTarget.output;
+  EXPECT_FALSE(std::filesystem::exists(path("none.json")));
+
+  // The floor with a target cell two layers up over nothing: a target in two pieces.
+  ASSERT_EQ(datomsim("generate box --size 5,5,1 -o " + path("floor.json")).status, 0);
+  auto scene = nlohmann::json::parse(readText(path("floor.json")));
+  nlohmann::json cells = nlohmann::json::array();
+  for (const auto& module : scene["modules"]) cells.push_back(module["cell"]);
+  cells.push_back({2, 2, 3});
+  scene["modules"].push_back({{"id", 26}, {"cell", {1, 1, 1}}});
+  scene["targets"] = {{{"format", "grid"}, {"cells", cells}}};
+  std::ofstream(path("stuck.json")) << scene.dump();
+  const Outcome stuck =
+      datomsim("plan " + path("stuck.json") + " --out " + path("stuck.json.plan"));
+  EXPECT_EQ(stuck.status, 1) << stuck.output;
+  EXPECT_NE(stuck.output.find("no plan: the target is in several pieces"), std::string::npos)
+      << stuck.output;
+  const auto failed = nlohmann::json::parse(readText(path("stuck.json.plan")));
+  EXPECT_EQ(failed["success"], false);
+  EXPECT_EQ(failed["target_in_pieces"], true);
+  EXPECT_TRUE(failed["steps"].empty());
+}
+
 }  // namespace
 }  // namespace datomsim

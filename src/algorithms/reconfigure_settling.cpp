@@ -80,7 +80,13 @@ void ReconfigureProgram::repairPocket(Context& context) {
   const double rank = target_->rank(context.cell());
   for (const int side : kSameLayer) {
     const Cell pocket = context.cell() + geometry::neighbourOffset(side);
-    if (!isOpen(context, pocket) || (!exit && target_->rank(pocket) >= rank)) continue;
+    // Never for a pocket nearer the layer's edge than this cell: the hole left here would walk
+    // inward, and the cells around it fill again and again (a mover on the layer's centre that
+    // left it for an outer pocket made movers circle for ever, one motion at a time).
+    if (!isOpen(context, pocket) || target_->rank(pocket) > rank ||
+        (!exit && target_->rank(pocket) >= rank)) {
+      continue;
+    }
     bool enclosed = true;
     for (const int around : kSameLayer) {
       const Cell wall = pocket + geometry::neighbourOffset(around);

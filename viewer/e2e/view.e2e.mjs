@@ -115,7 +115,13 @@ function makePages(scratch) {
   const buildFile = join(scratch, 'arch-build.html');
   view(join(demo, 'arch-build-trace.jsonl'), '-o', buildFile);
   const buildRun = JSON.parse(readFileSync(join(demo, 'arch-build-run.json'), 'utf8'));
-  pages.push({ name: 'arch-build', file: buildFile, reshape: buildRun });
+  // Each motion's start and end, read from the trace itself (its "motion" lines).
+  const buildMotions = readFileSync(join(demo, 'arch-build-trace.jsonl'), 'utf8')
+    .split('\n')
+    .filter((line) => line.includes('"motion":{'))
+    .map((line) => JSON.parse(line))
+    .map((e) => ({ t: e.t, end: e.motion.end, m: e.motion.m }));
+  pages.push({ name: 'arch-build', file: buildFile, reshape: buildRun, motions: buildMotions });
 
   const sceneFile = join(scratch, 'scene-hole1.html');
   view(join(repository, 'scenes', 'paper-arch-hole1.json'), '-o', sceneFile);
@@ -610,12 +616,31 @@ async function testReshape(page, spec) {
   await check(`${name}: in the middle, the run's most motions at once, as many modules mid-motion`, async () => {
     const concurrency = await page.evaluate(`${api}.concurrency()`);
     assert(concurrency.max === run.max_concurrent_motions && concurrency.max >= 4, `strip max ${concurrency.max}, run ${run.max_concurrent_motions}`);
-    const { from, to } = concurrency.maxAt[0];
-    await page.evaluate(`${api}.seek(${(from + to) / 2})`);
+    // A motion that has just started or is about to end has its module's body still (or again)
+    // within a hair of a cell: seek the moment of the most motions at once where the motion
+    // nearest either end is farthest from it.
+    const motions = spec.motions;
+    let best = { time: 0, margin: -1 };
+    for (const { from, to } of concurrency.maxAt) {
+      for (let k = 1; k < 10; k++) {
+        const time = from + ((to - from) * k) / 10;
+        const margins = motions
+          .filter((m) => m.t <= time && time < m.end)
+          .map((m) => Math.min(time - m.t, m.end - time) / (m.end - m.t));
+        const margin = Math.min(...margins);
+        if (margins.length === concurrency.max && margin > best.margin) best = { time, margin };
+      }
+    }
+    await page.evaluate(`${api}.seek(${best.time})`);
     const inFlight = await page.evaluate(`${api}.motionsInFlight()`);
     const away = await awayFromCells(page);
+    const mobiles = new Set(inFlight.map((m) => m.m));
     assert(inFlight.length === concurrency.max, `${inFlight.length} motions in flight`);
-    assert(away.length === inFlight.length, `${away.length} module bodies away from their cells`);
+    assert(away.every((id) => mobiles.has(id)), `away ${away}, mobiles ${[...mobiles]}`);
+    // Every module a tenth or more into its motion, and as far from its end, is away.
+    const underWay = inFlight.filter((m) => Math.min(best.time - m.t, m.end - best.time) / (m.end - m.t) >= 0.1);
+    assert(underWay.every((m) => away.includes(m.m)) && underWay.length >= 4,
+      `${away.length} module bodies away from their cells, ${underWay.length} motions under way`);
     const middle = await page.evaluate(`${api}.targets()`);
     assert(middle.filled > 0 && middle.filled < cells, `${middle.filled} of ${cells} filled`);
     await shoot(page, `${name}-middle`);

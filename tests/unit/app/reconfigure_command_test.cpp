@@ -27,7 +27,21 @@ nlohmann::json targetCells(const std::string& scene) {
   return sorted;
 }
 
-class ReconfigureCommand : public CommandLine {};
+class ReconfigureCommand : public CommandLine {
+ protected:
+  // stuck.json: a 5x5 floor with one module on it, and a target that keeps the floor and wants a
+  // cell two layers up, over nothing.
+  void writeStuckScene() {
+    ASSERT_EQ(datomsim("generate box --size 5,5,1 -o " + path("floor.json")).status, 0);
+    auto scene = nlohmann::json::parse(readText(path("floor.json")));
+    nlohmann::json cells = nlohmann::json::array();
+    for (const auto& module : scene["modules"]) cells.push_back(module["cell"]);
+    cells.push_back({2, 2, 3});
+    scene["modules"].push_back({{"id", 26}, {"cell", {1, 1, 1}}});
+    scene["targets"] = {{{"format", "grid"}, {"cells", cells}}};
+    std::ofstream(path("stuck.json")) << scene.dump();
+  }
+};
 
 TEST_F(ReconfigureCommand, TheProjectsScenesAreTheGeneratorsCases) {
   for (const auto& [kase, name] :
@@ -82,14 +96,7 @@ TEST_F(ReconfigureCommand, TakesTheTargetFromAnotherFileAndEndsOnItsCells) {
 TEST_F(ReconfigureCommand, AFailedRunWritesItsReasonCellsAndTraceAndExitsOne) {
   // A floor with one module on it; the target keeps the floor and wants a cell two layers up,
   // which no module can reach from the floor alone.
-  ASSERT_EQ(datomsim("generate box --size 5,5,1 -o " + path("floor.json")).status, 0);
-  auto scene = nlohmann::json::parse(readText(path("floor.json")));
-  nlohmann::json cells = nlohmann::json::array();
-  for (const auto& module : scene["modules"]) cells.push_back(module["cell"]);
-  cells.push_back({2, 2, 3});
-  scene["modules"].push_back({{"id", 26}, {"cell", {1, 1, 1}}});
-  scene["targets"] = {{{"format", "grid"}, {"cells", cells}}};
-  std::ofstream(path("stuck.json")) << scene.dump();
+  writeStuckScene();
   const Outcome run = datomsim("run " + path("stuck.json") + " --program reconfigure --out " +
                                path("stuck-run.json") + " --trace " + path("stuck.jsonl"));
   EXPECT_EQ(run.status, 1) << run.output;
@@ -147,14 +154,7 @@ TEST_F(ReconfigureCommand, PlanGivesTheBaselineOrTheCellsItCannotFill) {
   EXPECT_FALSE(std::filesystem::exists(path("none.json")));
 
   // The floor with a target cell two layers up over nothing: a target in two pieces.
-  ASSERT_EQ(datomsim("generate box --size 5,5,1 -o " + path("floor.json")).status, 0);
-  auto scene = nlohmann::json::parse(readText(path("floor.json")));
-  nlohmann::json cells = nlohmann::json::array();
-  for (const auto& module : scene["modules"]) cells.push_back(module["cell"]);
-  cells.push_back({2, 2, 3});
-  scene["modules"].push_back({{"id", 26}, {"cell", {1, 1, 1}}});
-  scene["targets"] = {{{"format", "grid"}, {"cells", cells}}};
-  std::ofstream(path("stuck.json")) << scene.dump();
+  writeStuckScene();
   const Outcome stuck =
       datomsim("plan " + path("stuck.json") + " --out " + path("stuck.json.plan"));
   EXPECT_EQ(stuck.status, 1) << stuck.output;

@@ -179,6 +179,8 @@ class ReconfigureProgram : public Program {
   bool offTheEnsemble(const geometry::Cell& goal) const;
   // A candidate's distance with the failures at its goal counted against it.
   int64_t effective(int candidate) const;
+  // For a mover that the gradient has not reached: the candidate that takes it lowest, or -1.
+  int fallingMotion(const Context& context) const;
   // A helper's AckDeform or NackDeform.
   void onHelperAnswer(Context& context, const RoutedMsg& answer, bool granted);
   void move(Context& context);
@@ -221,6 +223,9 @@ class ReconfigureProgram : public Program {
   int32_t standing_ = kUnknown;
   uint64_t standingVersion_ = 0;
   int roundsWithoutDescent_ = 0;
+  // Rounds in a row in which no pivot knew a distance; past kRoundsBeforeFalling the mover falls.
+  int roundsWithoutDistance_ = 0;
+  static constexpr int kRoundsBeforeFalling = 5;
   std::vector<std::pair<geometry::Cell, int>> failedGoals_;
   // The cells the mover has arrived at since it last went down the gradient, and how often.
   std::vector<std::pair<geometry::Cell, int>> visited_;

@@ -91,6 +91,29 @@ bool ReconfigureProgram::offTheEnsemble(const Cell& goal) const {
   return goal.z == 0 && !target_->contains(goal);
 }
 
+int ReconfigureProgram::fallingMotion(const Context& context) const {
+  // The lowest goal; between goals as low, the fewest helpers, and the goals tried or stood on
+  // fewer times (the same weights as effective()).
+  int best = -1;
+  int64_t bestCost = 0;
+  for (size_t i = 0; i < candidates_.size(); ++i) {
+    const Cell& goal = candidates_[i].goal;
+    if (offTheEnsemble(goal)) continue;
+    int64_t cost = 4 * int64_t(goal.z - context.cell().z) + int64_t(candidates_[i].helpers.size());
+    for (const auto& [cell, times] : failedGoals_) {
+      if (cell == goal) cost += 12 * int64_t(times);
+    }
+    for (const auto& [cell, times] : visited_) {
+      if (cell == goal) cost += 6 * int64_t(times);
+    }
+    if (best < 0 || cost < bestCost) {
+      best = int(i);
+      bestCost = cost;
+    }
+  }
+  return best;
+}
+
 void ReconfigureProgram::choose(Context& context) {
   // Asked to make way meanwhile: that comes first.
   if (makingWay()) return retryLater(context);
@@ -108,13 +131,20 @@ void ReconfigureProgram::choose(Context& context) {
     }
     if (best >= 0) break;
   }
+  // No pivot around knows a distance: the gradient has not reached this mover, as on a heap of
+  // movers hanging by one latch off the ensemble, whose distances no greedy route brings. Waiting
+  // for it would be for ever; after a few rounds the mover falls towards the ground instead, where
+  // the settled modules know the way.
+  roundsWithoutDistance_ = best < 0 ? roundsWithoutDistance_ + 1 : 0;
+  const bool falling = best < 0 && roundsWithoutDistance_ > kRoundsBeforeFalling;
+  if (falling) best = fallingMotion(context);
   if (best < 0) {
     phase_ = Phase::kWaiting;
     return retryLater(context);
   }
   // Down the gradient; sideways or up only when no way down has come for a few rounds.
   if (standingVersion_ != newest) standing_ = kUnknown;
-  if (standing_ != kUnknown && candidateDistances_[best] >= standing_ &&
+  if (!falling && standing_ != kUnknown && candidateDistances_[best] >= standing_ &&
       roundsWithoutDescent_ < 3) {
     ++roundsWithoutDescent_;
     phase_ = Phase::kWaiting;

@@ -67,9 +67,13 @@ Status HelperDuty::onDeformRequest(Context& context, Router& router, const Route
   return Ok{};
 }
 
+Time HelperDuty::checkPeriod() const {
+  return terms_->look > 0 ? std::min(terms_->look, terms_->lease) : terms_->lease;
+}
+
 void HelperDuty::grant(Context& context, const RoutedMsg& request) {
-  if (grants_.empty()) context.setTimer(terms_->lease, terms_->leaseTimer);
-  grants_.push_back({request.request, context.now() + terms_->lease});
+  if (grants_.empty()) context.setTimer(checkPeriod(), terms_->leaseTimer);
+  grants_.push_back({request.request, context.now() + terms_->lease, request.origin});
   ++holders_;
 }
 
@@ -145,13 +149,18 @@ Status HelperDuty::onDeformationDone(Context& context, Router& router, bool busy
 bool HelperDuty::onTimer(Context& context, int tag) {
   if (terms_->oneMotion) return false;
   if (tag == terms_->leaseTimer) {
-    // Grants whose mover never came back lapse; the piston goes when none is left.
+    // Grants whose mover never came back lapse, and so do those whose mover has left the cell it
+    // asked from (its release may never arrive: a helper holding a piston can be cut off from
+    // every route, its latches on that axis open); the piston goes when none is left.
     const Time now = context.now();
     const size_t before = grants_.size();
-    std::erase_if(grants_, [&](const Grant& grant) { return grant.until <= now; });
+    std::erase_if(grants_, [&](const Grant& grant) {
+      return grant.until <= now ||
+             (terms_->look > 0 && !context.occupied(grant.origin).value_or(true));
+    });
     holders_ -= int(before - grants_.size());
     if (holders_ == 0 && before != grants_.size()) releaseWhenFree(context);
-    if (!grants_.empty()) context.setTimer(terms_->lease, terms_->leaseTimer);
+    if (!grants_.empty()) context.setTimer(checkPeriod(), terms_->leaseTimer);
     return true;
   }
   if (tag == terms_->releaseAgainTimer) {

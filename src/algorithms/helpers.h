@@ -134,6 +134,10 @@ class HelperDuty {
     // release is acknowledged at once, and grants lapse after `lease`.
     bool oneMotion = false;
     Time lease = 0;
+    // How often a helper looks at the cells its movers asked from: a grant whose mover has left
+    // its cell is over (the motion was made, or the mover went another way), even when the
+    // mover's release cannot reach it. 0: only the lease ends grants.
+    Time look = 0;
     // The timer tags the duty uses with several motions: the leases' check, and another try at
     // letting the piston go once no motion needs it.
     int leaseTimer = 0;
@@ -160,11 +164,14 @@ class HelperDuty {
   Status answer(Context& context, Router& router, const RoutedMsg& request, bool granted);
   void grant(Context& context, const RoutedMsg& request);
   void releaseWhenFree(Context& context);
+  // How often the timer of the grants fires: the look, or the lease without one.
+  Time checkPeriod() const;
 
   const Terms* terms_;
   struct Grant {
     uint32_t request;  // the mover's request number, unique to the mover
     Time until;
+    geometry::Cell origin;  // where the mover asked from
   };
   // The world axis of the piston held, the motions it is held for (each until its lease lapses),
   // and who waits for it.

@@ -129,8 +129,11 @@ class ReconfigureProgram : public Program {
   static constexpr int kWatchdog = 1000;
   // How long a helper holds a piston for a motion that does not come: the mover may have given up.
   static constexpr Time kLeaseTime = 60 * kSecond;
+  // How often a helper looks whether its movers have left the cells they asked from.
+  static constexpr Time kLookTime = 5 * kSecond;
   static constexpr HelperDuty::Terms kHelperTerms{.oneMotion = false,
                                                   .lease = kLeaseTime,
+                                                  .look = kLookTime,
                                                   .leaseTimer = kLease,
                                                   .releaseAgainTimer = kReleaseAgain};
   static constexpr Color kMoving{255, 160, 32};

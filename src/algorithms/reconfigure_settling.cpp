@@ -50,6 +50,11 @@ void ReconfigureProgram::settle(Context& context) {
   settled_ = true;
   phase_ = Phase::kIdle;
   context.setColor(kSettled);
+  // The cells this fill opens are beside it (above it, or next to it farther out on its layer):
+  // seeded at once, in the version of now. A goal added only lowers distances, so the wave of
+  // improvement is right in the current version and movers head for the new cells without
+  // waiting for the next period; the closed cell's own distances, too low now, wait for it.
+  seedOpenCells(context);
   // The cell it fills is closed and new ones may open: a new version of the gradient, at the
   // start of the next period.
   const uint64_t version = nextVersion(context.now());

@@ -28,7 +28,7 @@ class RecordingContext final : public Context {
   int pistonAlong(int worldAxis) const override { return worldAxis; }
   int worldAxis(int piston) const override { return piston; }
   Time now() const override { return now_; }
-  std::optional<bool> occupied(const Cell&) const override { return true; }
+  std::optional<bool> occupied(const Cell& cell) const override { return cell != emptied; }
   std::optional<uint16_t> occupiedAround(const Cell&) const override { return uint16_t{0}; }
   uint16_t latchedConnectors() const override { return 1; }
   Cell cellBehind(int) const override { return kNeighbour; }
@@ -57,6 +57,7 @@ class RecordingContext final : public Context {
   const Parameters& parameters() const override { return parameters_; }
 
   static constexpr Cell kNeighbour{1, 0, 1};
+  Cell emptied{99, 99, 99};  // the one cell the module senses empty
   std::vector<std::string> sent;
   std::vector<int> compressed;
   int releases = 0;
@@ -156,6 +157,26 @@ TEST(HelperDuty, AGrantWhoseMoverNeverComesBackLapses) {
   ASSERT_TRUE(duty.onDeformationDone(context, router, false).ok());
   context.now_ = 60 * kSecond;
   EXPECT_TRUE(duty.onTimer(context, kShared.leaseTimer));
+  EXPECT_EQ(context.releases, 1);
+}
+
+TEST(HelperDuty, AGrantEndsWhenItsMoverHasLeftTheCellItAskedFrom) {
+  // The mover's release may never reach a helper cut off from every route by its own piston.
+  static constexpr HelperDuty::Terms kLooking{
+      .lease = 60 * kSecond, .look = 5 * kSecond, .leaseTimer = 3, .releaseAgainTimer = 2};
+  RecordingContext context;
+  Router router;
+  HelperDuty duty(kLooking);
+  ASSERT_TRUE(duty.onDeformRequest(context, router, request(1, 2), false).ok());
+  ASSERT_TRUE(duty.onDeformationDone(context, router, false).ok());
+  ASSERT_FALSE(context.timers.empty());
+  EXPECT_EQ(context.timers.front(), (std::pair<Time, int>{5 * kSecond, 3}));
+  context.now_ = 5 * kSecond;
+  EXPECT_TRUE(duty.onTimer(context, kLooking.leaseTimer));
+  EXPECT_EQ(context.releases, 0);  // the mover is still there: it may be waiting for its turn
+  context.emptied = RecordingContext::kNeighbour;
+  context.now_ = 10 * kSecond;
+  EXPECT_TRUE(duty.onTimer(context, kLooking.leaseTimer));
   EXPECT_EQ(context.releases, 1);
 }
 

@@ -143,7 +143,7 @@ class ReconfigureProgram : public Program {
   // Versions of the gradient are numbered by period of simulated time: every module that fills a
   // cell during a period asks for the version of the next one, at its start, so that one flood
   // carries the fills of a whole period (docs/reconfiguration.md).
-  static constexpr Time kVersionPeriod = 20 * 1000 * kMillisecond;
+  static constexpr Time kVersionPeriod = 10 * 1000 * kMillisecond;
   static uint64_t nextVersion(Time now) { return uint64_t(now / kVersionPeriod) + 1; }
   // A distance found is told this much later, with what has improved meanwhile.
   static constexpr Time kSpreadDelay = 30 * kMillisecond;

@@ -3,7 +3,7 @@
 
     bench/reconfiguration/stress.py --cases N [--seed S] [--movers LO,HI] [--heights LO,HI]
                                     [--families F,...] [--spread uniform|log]
-                                    [--workers W] [--out DIR]
+                                    [--range FROM,TO] [--workers W] [--out DIR]
 
 Case i draws, from a stream seeded by S, a family (in turn) and its case:
 
@@ -19,7 +19,8 @@ reconfigure --seed R` (R drawn too); it is one CSV row in DIR/stress.csv (family
 arguments, run seed, movers, built or not, motions, makespan, wall time, the reason), written as
 the cases end (DIR/stress.csv.partial meanwhile); the cases not built are printed with the
 command that makes them again, and their scene and run JSON stay in DIR/failed/. The same
-arguments give the same cases.
+arguments give the same cases; `--range FROM,TO` runs only cases FROM to TO-1 of them (to share
+one draw between machines, or finish a run that was stopped).
 """
 import argparse
 import concurrent.futures
@@ -108,6 +109,8 @@ def main():
     parser.add_argument("--families", default="mound",
                         type=lambda text: text.split(","))
     parser.add_argument("--spread", choices=("uniform", "log"), default="uniform")
+    parser.add_argument("--range", type=lambda text: tuple(int(v) for v in text.split(",")),
+                        dest="case_range")
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--out", default="stress-results")
     options = parser.parse_args()
@@ -122,6 +125,11 @@ def main():
         family = options.families[index % len(options.families)]
         arguments = draw(stream, family, options.movers, options.heights, options.spread)
         todo.append((index, family, arguments, stream.randint(1, 10**6)))
+    if options.case_range:
+        first, last = options.case_range
+        if not 0 <= first < last <= options.cases:
+            raise SystemExit(f"stress: --range {first},{last}: 0 <= FROM < TO <= --cases")
+        todo = todo[first:last]
     os.makedirs(options.out, exist_ok=True)
     path = os.path.join(options.out, "stress.csv")
     kept = os.path.join(options.out, "failed")

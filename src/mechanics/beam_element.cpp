@@ -1,5 +1,6 @@
 #include "mechanics/beam_element.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 namespace datomsim::mechanics {

@@ -44,8 +44,7 @@ void streamLoadsJson(const LoadsOutput& output, JsonObjectStream::Emit emit) {
   out.field("total_weight_n", solution.totalWeight);
   out.field("solver", {{"method", solution.method},
                        {"iterations", solution.iterations},
-                       {"relative_residual", solution.residual},
-                       {"seconds", output.seconds}});
+                       {"relative_residual", solution.residual}});
   const mechanics::Tipping& tipping = output.tipping;
   out.field("tipping", {{"tips", tipping.tips},
                         {"centre_of_mass_m", vectorJson(tipping.centreOfMass)},

@@ -131,7 +131,10 @@ void writeLoadPictures(const LoadsOutput& output, const LoadsArguments& args,
   picture.title = fmt::format("Latch safety factors: {} ({} view)", sceneName, args.view);
   const std::vector<std::string> summary = loadsSummary(output);
   picture.lines = {summary.front(),
-                   "each module coloured by the lowest safety factor of its latches",
+                   fmt::format("each module coloured by the lowest safety factor of its latches "
+                               "(a latch holds {} and {})",
+                               withPrefix(model.parameters.latchMoment, "N m"),
+                               withPrefix(model.parameters.latchForce, "N")),
                    summary.back()};
   if (!args.png.empty()) {
     unwrap(render::writeValueMapPng(picture, args.png));

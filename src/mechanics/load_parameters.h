@@ -21,8 +21,9 @@ struct LoadParameters {
   // The fraction of a module's cell (a rhombic dodecahedron of volume 4 sqrt2 r^3) that is
   // material: a Datom is hollow.
   double solidFraction = 0.25;
-  // Young's modulus E and Poisson's ratio nu of the connection's material (PLA: 3.5 GPa, 0.36).
-  double youngModulus = 3.5e9;
+  // Young's modulus E and Poisson's ratio nu of the connection's material (printed PLA: 3.0 GPa,
+  // 0.36).
+  double youngModulus = 3.0e9;
   double poissonRatio = 0.36;
   // What one latch holds: the largest force (N) and moment (N m) it transmits.
   double latchForce = 1.0;

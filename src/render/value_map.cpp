@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "common/atomic_file.h"
+#include "render/svg_ids.h"
 
 namespace datomsim::render {
 
@@ -271,8 +272,9 @@ Result<std::string> renderValueMapSvg(const ValueMapPicture& picture) {
         cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
         return surface;
       },
-      [](cairo_surface_t* surface, std::string*) {
+      [](cairo_surface_t* surface, std::string* bytes) {
         cairo_surface_finish(surface);
+        renumberSurfaceIds(*bytes);
         return cairo_surface_status(surface);
       });
 }

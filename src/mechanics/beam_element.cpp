@@ -79,7 +79,8 @@ LatchLoad latchLoad(const BeamMatrix& stiffness, const BeamVector& ends, const g
   load.force = toVec(force);
   load.moment = toVec(moment);
   // a pulls b back towards itself when the beam is stretched.
-  load.axialForce = -force.dot(e);
+  // (0 - x rather than -x: an unloaded latch reads 0, not -0.)
+  load.axialForce = 0.0 - force.dot(e);
   load.shearForce = (force - force.dot(e) * e).norm();
   load.torsion = std::abs(moment.dot(e));
   load.bendingMoment = (moment - moment.dot(e) * e).norm();

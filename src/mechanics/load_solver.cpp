@@ -62,6 +62,9 @@ Assembly assemble(const LoadModel& model, const std::array<BeamMatrix, 12>& stif
       unknowns += kDofs;
     }
   }
+  // Everything on the ground: nothing to solve (and Eigen's compression of an empty reserved
+  // matrix reads out of bounds).
+  if (unknowns == 0) return out;
   const Incidence incidence = incidenceOf(model);
   auto otherEnd = [&](const Beam& beam, uint32_t node) { return beam.a == node ? beam.b : beam.a; };
   // Entries per column.

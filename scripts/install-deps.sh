@@ -7,6 +7,8 @@ packages=(
   build-essential cmake pkg-config git time
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtinyxml2-dev libfmt-dev libcairo2-dev
+  # The load model's sparse solvers (docs/mechanics.md).
+  libeigen3-dev
   clang-format cmake-format
   # The fuzz harnesses (scripts/fuzz.sh): Clang and its libFuzzer and sanitizer runtimes.
   clang libclang-rt-dev

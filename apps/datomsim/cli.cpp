@@ -80,6 +80,7 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
   app::addCompareCommand(app, reporter);
   app::addRunCommand(app, reporter, programs);
   app::addPlanCommand(app, reporter);
+  app::addLoadsCommand(app, reporter);
   app::addDemoCommand(app, reporter);
   app::addViewCommand(app, reporter);
   app::addVideoCommand(app, reporter);

@@ -59,6 +59,8 @@ void addRunCommand(CLI::App& app, const Reporter& reporter,
 void addDemoCommand(CLI::App& app, const Reporter& reporter);
 // The centralised planner of a reconfiguration.
 void addPlanCommand(CLI::App& app, const Reporter& reporter);
+// The loads on every latch under gravity (docs/mechanics.md).
+void addLoadsCommand(CLI::App& app, const Reporter& reporter);
 void addViewCommand(CLI::App& app, const Reporter& reporter);
 void addMeshCommand(CLI::App& app, const Reporter& reporter);
 void addVideoCommand(CLI::App& app, const Reporter& reporter);

@@ -66,6 +66,20 @@ void JsonObjectStream::cellValues(std::string_view key,
   flush();
 }
 
+void JsonObjectStream::records(std::string_view key, size_t count,
+                               const std::function<nlohmann::ordered_json(size_t)>& record) {
+  open(key);
+  buffer_.push_back('[');
+  for (size_t i = 0; i < count; ++i) {
+    if (i > 0) buffer_.push_back(',');
+    const std::string text = record(i).dump();
+    buffer_.append(text.data(), text.data() + text.size());
+    flushIfFull();
+  }
+  buffer_.push_back(']');
+  flush();
+}
+
 void JsonObjectStream::cellValues(std::string_view key,
                                   const std::vector<std::pair<geometry::Cell, double>>& list) {
   cellValues(key, [&](const CellValue& write) {

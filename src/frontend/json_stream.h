@@ -33,6 +33,10 @@ class JsonObjectStream {
   // The same from a source that calls its argument once per cell, in order: nothing is gathered.
   using CellValue = std::function<void(const geometry::Cell&, double)>;
   void cellValues(std::string_view key, const std::function<void(const CellValue&)>& source);
+  // A list of `count` values made one at a time by `record` (small objects: each is printed and
+  // dropped before the next is made).
+  void records(std::string_view key, size_t count,
+               const std::function<nlohmann::ordered_json(size_t)>& record);
   // Ends the object and the line.
   void close();
 

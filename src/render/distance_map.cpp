@@ -16,6 +16,7 @@
 #include "common/atomic_file.h"
 #include "render/distance_map_drawing.h"
 #include "render/distance_map_layout.h"
+#include "render/svg_ids.h"
 
 namespace datomsim::render {
 
@@ -56,30 +57,6 @@ Status drawOn(cairo_surface_t* surface, const Scene& scene, const DistanceMapPic
     return cairoError("cannot draw the picture", cairo_status(cr.get()));
   }
   return Ok{};
-}
-
-// Cairo names each SVG group after its surface's process-wide serial number ("surface126"), so
-// the same picture drawn twice in one process would differ. Renumbers them in order of first
-// appearance; the names only appear as id="surfaceN" and references "#surfaceN".
-void renumberSurfaceIds(std::string& svg) {
-  constexpr std::string_view kName = "surface";
-  std::map<std::string, int, std::less<>> numbers;
-  std::string out;
-  out.reserve(svg.size());
-  size_t copied = 0;
-  for (size_t at = svg.find(kName); at != std::string::npos; at = svg.find(kName, at + 1)) {
-    const bool named = at > 0 && (svg[at - 1] == '"' || svg[at - 1] == '#');
-    size_t end = at + kName.size();
-    while (end < svg.size() && svg[end] >= '0' && svg[end] <= '9') ++end;
-    if (!named || end == at + kName.size()) continue;
-    const std::string serial = svg.substr(at + kName.size(), end - at - kName.size());
-    const auto known = numbers.emplace(serial, static_cast<int>(numbers.size()) + 1).first;
-    out.append(svg, copied, at + kName.size() - copied);
-    out += std::to_string(known->second);
-    copied = end;
-  }
-  out.append(svg, copied);
-  svg = std::move(out);
 }
 
 // Text for an SVG element's content.

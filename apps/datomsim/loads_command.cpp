@@ -1,0 +1,106 @@
+// `loads`: the load model of a scene under gravity (docs/mechanics.md): every latch's force,
+// moment and safety factor, the most loaded latches, the tipping check, the safety map.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <tuple>
+
+#include "commands.h"
+#include "frontend/loads_on_scene.h"
+#include "io/scene_file.h"
+
+namespace datomsim::app {
+
+namespace {
+
+struct LoadsCommandArguments {
+  frontend::LoadsArguments loads;
+  std::string gravity = "0,0,-9.81";
+  std::string solver = "auto";
+};
+
+// A picture's format is its option's: a file named otherwise would hold what its name does not
+// say.
+void refuseMisnamedPictures(const frontend::LoadsArguments& loads) {
+  for (const auto& [option, path, extension] :
+       {std::tuple{"--png", loads.png, ".png"}, std::tuple{"--svg", loads.svg, ".svg"}}) {
+    std::string given = std::filesystem::path(path).extension().string();
+    for (char& c : given) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (!path.empty() && given != extension) {
+      throw UsageError(
+          fmt::format("{} {}: the picture's file name must end in {}", option, path, extension));
+    }
+  }
+}
+
+}  // namespace
+
+void addLoadsCommand(CLI::App& app, const Reporter& reporter) {
+  auto args = std::make_shared<LoadsCommandArguments>();
+  mechanics::LoadParameters& p = args->loads.parameters;
+  CLI::App* command = app.add_subcommand(
+      "loads",
+      "The loads on every latch of a scene under gravity (one node per module, a beam per latch, "
+      "the ground layer held): forces, moments, safety factors, tipping, a safety map");
+  command->add_option("scene", args->loads.scene, "Scene file (.xml or .json)")->required();
+  command->add_option("--radius", p.radius, "Module radius r, m")->capture_default_str();
+  command->add_option("--thickness", p.thickness, "Thickness t of the moving parts, m")
+      ->capture_default_str();
+  command->add_option("--density", p.density, "Density of the material, kg/m^3 (PLA)")
+      ->capture_default_str();
+  command
+      ->add_option("--solid-fraction", p.solidFraction,
+                   "Fraction of a module's cell that is material (0 to 1)")
+      ->capture_default_str();
+  command->add_option("--young-modulus", p.youngModulus, "Young's modulus of the material, Pa")
+      ->capture_default_str();
+  command->add_option("--poisson-ratio", p.poissonRatio, "Poisson's ratio of the material")
+      ->capture_default_str();
+  command->add_option("--latch-force", p.latchForce, "The largest force a latch holds, N")
+      ->capture_default_str();
+  command->add_option("--latch-moment", p.latchMoment, "The largest moment a latch holds, N m")
+      ->capture_default_str();
+  command->add_option("--gravity", args->gravity, "Gravity x,y,z, m/s^2")->capture_default_str();
+  command->add_option("--top", args->loads.top, "How many of the most loaded latches to name")
+      ->capture_default_str();
+  command->add_option("--view", args->loads.view, "The pictures' view: side (along +y) or top")
+      ->check(CLI::IsMember({"side", "top"}))
+      ->capture_default_str();
+  command
+      ->add_option("--solver", args->solver,
+                   "auto (factorised up to 20000 free modules, iterative above), direct or "
+                   "iterative")
+      ->check(CLI::IsMember({"auto", "direct", "iterative"}))
+      ->capture_default_str();
+  command->add_option("--png", args->loads.png, "Write the safety map as a PNG picture");
+  command->add_option("--svg", args->loads.svg, "Write the safety map as an SVG picture");
+  addOutputOption(*command, args->loads.out);
+  addExample(*command, "loads scenes/paper-arch-hole2.json --png arch-loads.png --out loads.json");
+  command->callback([args, &reporter] {
+    frontend::LoadsArguments& loads = args->loads;
+    std::vector<NamedPath> outputs = {{"--out", loads.out}};
+    if (!loads.png.empty()) outputs.push_back({"--png", loads.png});
+    if (!loads.svg.empty()) outputs.push_back({"--svg", loads.svg});
+    refuseClashes({{"scene", loads.scene}}, outputs);
+    refuseMisnamedPictures(loads);
+    loads.parameters.gravity = frontend::parseVector("--gravity", args->gravity);
+    loads.method = args->solver == "direct"      ? mechanics::SolverMethod::kDirect
+                   : args->solver == "iterative" ? mechanics::SolverMethod::kIterative
+                                                 : mechanics::SolverMethod::kAutomatic;
+    io::Scene scene = unwrap(io::readScene(loads.scene));
+    // A scene file describes its rest state: every pair of neighbours latched.
+    scene.world.latchAllNeighbours();
+    const frontend::LoadsOutput output = frontend::loadsOnScene(scene.world, loads);
+    // Everything is computed before anything is written.
+    frontend::writeLoadPictures(output, loads, loads.scene, reporter);
+    writeOutput(
+        loads.out, [&](std::FILE* file) { return frontend::writeLoadsJson(output, file); },
+        reporter);
+    for (const std::string& line : frontend::loadsSummary(output)) reporter.note(line);
+  });
+}
+
+}  // namespace datomsim::app

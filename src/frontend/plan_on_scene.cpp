@@ -37,6 +37,7 @@ void streamPlanJson(const PlanOutput& output, JsonObjectStream::Emit emit) {
   out.cells("outside", why.outside);
   out.cells("never_entered", why.neverEntered);
   out.field("target_in_pieces", why.targetInPieces);
+  out.cells("detached", why.detached);
   out.cells("never_opened", why.neverOpened);
   out.cells("unreachable", why.unreachable);
   // The trips in order, each motion as [rule, pivot, to]: enough to judge it again.

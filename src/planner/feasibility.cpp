@@ -1,6 +1,7 @@
 // The proofs of infeasibility made before planning (planner::provenInfeasible).
 #include <algorithm>
 #include <array>
+#include <map>
 #include <set>
 
 #include "geometry/lattice.h"
@@ -39,6 +40,37 @@ bool someMotionEnters(world::World& probe, const motion::MotionModel& model, Mod
   return false;
 }
 
+// The cells of `shape` outside its largest piece (neighbours in the lattice are joined), sorted;
+// empty when the shape is one piece.
+std::vector<Cell> apartFromLargestPiece(const std::set<Cell>& shape) {
+  std::map<Cell, int> pieceOf;
+  std::vector<size_t> sizes;
+  for (const Cell& first : shape) {
+    if (pieceOf.contains(first)) continue;
+    const int piece = int(sizes.size());
+    std::vector<Cell> todo = {first};
+    pieceOf[first] = piece;
+    size_t size = 0;
+    while (!todo.empty()) {
+      const Cell cell = todo.back();
+      todo.pop_back();
+      ++size;
+      for (int d = 0; d < geometry::kDirectionCount; ++d) {
+        const Cell next = cell + geometry::neighbourOffset(d);
+        if (shape.contains(next) && pieceOf.emplace(next, piece).second) todo.push_back(next);
+      }
+    }
+    sizes.push_back(size);
+  }
+  // The first largest: pieces are numbered from their smallest cell, the set's order.
+  const int largest = int(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
+  std::vector<Cell> apart;
+  for (const auto& [cell, piece] : pieceOf) {
+    if (piece != largest) apart.push_back(cell);
+  }
+  return apart;
+}
+
 }  // namespace
 
 Infeasibility provenInfeasible(const world::World& world, const std::vector<Cell>& target,
@@ -63,15 +95,8 @@ Infeasibility provenInfeasible(const world::World& world, const std::vector<Cell
     if (!someMotionEnters(probe, model, pivot.id, cell)) proof.neverEntered.push_back(cell);
   }
   // The ensemble stays in one piece, so its last shape must be one.
-  world::World finalShape(world.bounds());
-  uint32_t id = 1;
-  for (const Cell& cell : shape) {
-    world::Module module;
-    module.id = ModuleId{id++};
-    module.cell = cell;
-    if (!finalShape.add(module).ok()) break;
-  }
-  proof.targetInPieces = proof.outside.empty() && !isConnected(finalShape);
+  if (proof.outside.empty()) proof.detached = apartFromLargestPiece(shape);
+  proof.targetInPieces = !proof.detached.empty();
   return proof;
 }
 

@@ -47,6 +47,8 @@ struct Infeasibility {
   std::vector<geometry::Cell> neverEntered;
   // The target's cells form several pieces: the ensemble, kept in one piece, cannot fill them.
   bool targetInPieces = false;
+  // Then, the target cells apart from its largest piece (ties: the piece of the smallest cell).
+  std::vector<geometry::Cell> detached;
   // Target cells left empty because the order of filling never opened them (no support under
   // them, or target cells before them left empty).
   std::vector<geometry::Cell> neverOpened;

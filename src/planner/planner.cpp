@@ -285,7 +285,10 @@ Result<Plan> planReconfiguration(const world::World& world, const std::vector<Ce
     } else if (!proof.neverEntered.empty()) {
       plan.reason = "target cells no motion can ever enter: " + cellList(proof.neverEntered);
     } else {
-      plan.reason = "the target is in several pieces; the ensemble stays in one";
+      plan.reason =
+          "the target is in several pieces, and the ensemble stays in one: cells apart "
+          "from its largest piece: " +
+          cellList(proof.detached);
     }
     return plan;
   }

@@ -51,6 +51,9 @@ TEST(PlannerInfeasible, RefusesATargetInTwoPieces) {
   ASSERT_TRUE(plan.ok()) << plan.error();
   EXPECT_FALSE(plan->success);
   EXPECT_TRUE(plan->infeasible.targetInPieces);
+  EXPECT_EQ(plan->infeasible.detached, (std::vector<Cell>{{1, 1, 3}}));
+  EXPECT_NE(plan->reason.find("cells apart from its largest piece: 1,1,3"), std::string::npos)
+      << plan->reason;
 }
 
 TEST(PlannerInfeasible, NamesACellTheOrderNeverOpens) {

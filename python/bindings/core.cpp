@@ -16,6 +16,7 @@
 
 #include "frontend/arguments.h"
 #include "frontend/geometry_json.h"
+#include "frontend/loads_on_scene.h"
 #include "frontend/motion_json.h"
 #include "frontend/reach_on_scene.h"
 #include "frontend/reshape_case.h"
@@ -104,6 +105,91 @@ std::string moves(const Scene& scene, const py::object& at, const std::string& r
   }
   const motion::RuleTable table;
   return frontend::movesJson(cell, motion::evaluateAll(world, table, where, model.datom));
+}
+
+// A number of loads(), or the error naming it and what it got.
+double numberArgument(const py::handle& value, const std::string& name) {
+  if (py::isinstance<py::bool_>(value) ||
+      !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value))) {
+    throw py::type_error(
+        fmt::format("loads(): {} must be a number, got {}", name,
+                    py::str(py::type::of(value).attr("__name__")).cast<std::string>()));
+  }
+  return value.cast<double>();
+}
+
+// The JSON text of `loads --out`; the pictures asked for written as the command writes them.
+std::string loads(const Scene& scene, const py::dict& options) {
+  frontend::LoadsArguments args;
+  mechanics::LoadParameters& p = args.parameters;
+  const std::vector<std::pair<std::string, double*>> numbers = {
+      {"radius", &p.radius},
+      {"thickness", &p.thickness},
+      {"density", &p.density},
+      {"solid_fraction", &p.solidFraction},
+      {"young_modulus", &p.youngModulus},
+      {"poisson_ratio", &p.poissonRatio},
+      {"latch_force", &p.latchForce},
+      {"latch_moment", &p.latchMoment}};
+  std::string solver = "auto";
+  // The pictures' title names the scene: the command line gives its path.
+  std::string title = scene.scene().name.value_or("scene");
+  for (const auto& [key, value] : options) {
+    const std::string name = key.cast<std::string>();
+    if (value.is_none()) continue;
+    const auto number = std::find_if(numbers.begin(), numbers.end(),
+                                     [&](const auto& entry) { return entry.first == name; });
+    if (number != numbers.end()) {
+      *number->second = numberArgument(value, name);
+    } else if (name == "gravity") {
+      const auto parts = value.cast<py::sequence>();
+      if (py::isinstance<py::str>(value) || parts.size() != 3) {
+        throw py::type_error("loads(): gravity must be three numbers (x, y, z), m/s^2");
+      }
+      // Checked as the command line checks --gravity, with its message.
+      p.gravity = frontend::parseVector(
+          "--gravity",
+          fmt::format("{},{},{}", numberArgument(parts[0], "gravity"),
+                      numberArgument(parts[1], "gravity"), numberArgument(parts[2], "gravity")));
+    } else if (name == "top") {
+      if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
+        throw py::type_error("loads(): top must be an integer");
+      }
+      args.top = value.cast<int>();
+    } else if (name == "view" || name == "solver" || name == "png" || name == "svg" ||
+               name == "name") {
+      if (!py::isinstance<py::str>(value)) {
+        throw py::type_error(fmt::format("loads(): {} must be a string", name));
+      }
+      const std::string text = value.cast<std::string>();
+      if (name == "view") args.view = text;
+      if (name == "solver") solver = text;
+      if (name == "png") args.png = text;
+      if (name == "svg") args.svg = text;
+      if (name == "name") title = text;
+    } else {
+      throw UsageError(fmt::format(
+          "loads: unknown option {} (known: radius, thickness, density, solid_fraction, "
+          "young_modulus, poisson_ratio, latch_force, latch_moment, gravity, solver, top, view, "
+          "png, svg, name)",
+          name));
+    }
+  }
+  if (args.view != "side" && args.view != "top") {
+    throw UsageError("--view: " + args.view + " not in {side,top}");
+  }
+  if (solver != "auto" && solver != "direct" && solver != "iterative") {
+    throw UsageError("--solver: " + solver + " not in {auto,direct,iterative}");
+  }
+  args.method = solver == "direct"      ? mechanics::SolverMethod::kDirect
+                : solver == "iterative" ? mechanics::SolverMethod::kIterative
+                                        : mechanics::SolverMethod::kAutomatic;
+  // A scene describes its rest state: every pair of neighbours latched.
+  world::World world = scene.scene().world;
+  world.latchAllNeighbours();
+  const frontend::LoadsOutput output = frontend::loadsOnScene(world, args);
+  frontend::writeLoadPictures(output, args, title, frontend::Reporter(true));
+  return frontend::loadsJson(output);
 }
 
 // (the JSON text of `run --out`, the trace or None, the failure or None).
@@ -277,6 +363,7 @@ PYBIND11_MODULE(_core, module) {
              py::arg("attachment") = true, py::arg("module") = py::none(),
              py::arg("rolling") = "symmetric");
   module.def("run", &run, py::arg("scene"), py::arg("program"), py::arg("options"));
+  module.def("loads_json", &loads, py::arg("scene"), py::arg("options"));
   module.def("geometry", &geometryOf, py::arg("radius") = 1.0, py::arg("thickness") = 0.0,
              py::arg("fraction") = py::none());
 }

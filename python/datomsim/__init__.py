@@ -31,6 +31,7 @@ __all__ = [
     "box",
     "geometry",
     "load_scene",
+    "loads",
     "moves",
     "random_scene",
     "reach",
@@ -134,6 +135,52 @@ def moves(
     """Every rule of every pivot around ``at`` (a 3D Catom's: every roll), valid or refused with
     its reason: the list of ``datomsim moves --out``'s "moves"."""
     return json.loads(_core.moves_json(scene, at, rules, attachment, module, rolling))["moves"]
+
+
+def loads(
+    scene: Scene,
+    *,
+    radius: Optional[float] = None,
+    thickness: Optional[float] = None,
+    density: Optional[float] = None,
+    solid_fraction: Optional[float] = None,
+    young_modulus: Optional[float] = None,
+    poisson_ratio: Optional[float] = None,
+    latch_force: Optional[float] = None,
+    latch_moment: Optional[float] = None,
+    gravity: Optional[Sequence[float]] = None,
+    solver: Optional[str] = None,
+    top: Optional[int] = None,
+    view: Optional[str] = None,
+    png: Optional[Union[str, os.PathLike]] = None,
+    svg: Optional[Union[str, os.PathLike]] = None,
+    name: Optional[str] = None,
+) -> dict:
+    """The loads on every latch of ``scene`` under gravity, as ``datomsim loads --out``
+    (docs/mechanics.md): the parameters, the solver's figures, tipping, the most loaded latches
+    and every latch's force, moment and safety factor. Every pair of neighbours is latched, as a
+    scene file's rest state is. Parameters left out (None) take the command line's defaults, in
+    SI units; ``png`` and ``svg`` write the safety map, seen from the ``view`` ("side" or "top"),
+    titled with ``name`` (default: the scene's name).
+    """
+    options = {
+        "radius": radius,
+        "thickness": thickness,
+        "density": density,
+        "solid_fraction": solid_fraction,
+        "young_modulus": young_modulus,
+        "poisson_ratio": poisson_ratio,
+        "latch_force": latch_force,
+        "latch_moment": latch_moment,
+        "gravity": gravity,
+        "solver": solver,
+        "top": top,
+        "view": view,
+        "png": None if png is None else os.fspath(png),
+        "svg": None if svg is None else os.fspath(svg),
+        "name": name,
+    }
+    return json.loads(_core.loads_json(scene, options))
 
 
 def run(

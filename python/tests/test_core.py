@@ -141,6 +141,31 @@ def test_a_failed_run_is_a_result_with_its_reason():
     assert result["path"][0] == [0, 0, 6]
 
 
+def test_loads_give_what_loads_out_writes(scenes, cli, tmp_path):
+    path = scenes / "paper-arch-hole2.json"
+    scene = datomsim.load_scene(path)
+    ours = datomsim.loads(scene, latch_moment=2e-5, latch_force=0.05, top=3, view="top",
+                          png=tmp_path / "ours.png", name=str(path))
+    written = cli("loads", path, "--latch-moment", "2e-5", "--latch-force", "0.05", "--top", "3",
+                  "--view", "top", "--png", "theirs.png", "--out", "-")
+    assert written.returncode == 0, written.stderr
+    assert ours == json.loads(written.stdout)
+    assert ours["overloaded"] == 4
+    assert (tmp_path / "ours.png").read_bytes() == (tmp_path / "theirs.png").read_bytes()
+    with pytest.raises(datomsim.Error) as raised:
+        datomsim.loads(scene, gravity=(0, 0, float("nan")))
+    said = cli("loads", path, "--gravity", "0,0,nan")
+    assert said.stderr.strip() == f"datomsim: error: {raised.value}"
+    with pytest.raises(datomsim.Error) as raised:
+        datomsim.loads(scene, density=-1)
+    said = cli("loads", path, "--density", "-1")
+    assert said.stderr.strip() == f"datomsim: error: {raised.value}"
+    with pytest.raises(TypeError, match="density must be a number, got str"):
+        datomsim.loads(scene, density="dense")
+    with pytest.raises(TypeError, match="gravity must be three numbers"):
+        datomsim.loads(scene, gravity=(0, -9.81))
+
+
 def test_mistakes_raise_the_command_lines_message(scenes, cli):
     path = scenes / "paper-arch-hole1.json"
     scene = datomsim.load_scene(path)

@@ -182,6 +182,8 @@ class ReconfigureProgram : public Program {
   bool offTheEnsemble(const geometry::Cell& goal) const;
   // A candidate's distance with the failures at its goal counted against it.
   int64_t effective(int candidate) const;
+  // What a candidate's way has cost so far: its helpers, the failures at its goal, the visits.
+  int64_t tried(int candidate) const;
   // For a mover that the gradient has not reached: the candidate that takes it lowest, or -1.
   int fallingMotion(const Context& context) const;
   // A helper's AckDeform or NackDeform.

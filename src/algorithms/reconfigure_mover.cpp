@@ -70,17 +70,22 @@ void ReconfigureProgram::attemptFailed() {
 }
 
 int64_t ReconfigureProgram::effective(int candidate) const {
-  // In quarter motions: a goal whose attempts failed looks farther each time, so that another way
-  // gets its chance; between goals as near, the one that needs fewer helpers.
-  int64_t cost =
-      4 * int64_t(candidateDistances_[candidate]) + int64_t(candidates_[candidate].helpers.size());
-  for (const auto& [goal, times] : failedGoals_) {
-    if (goal == candidates_[candidate].goal) cost += 12 * int64_t(times);
+  // In quarter motions: the distance, then what the way has cost this mover so far.
+  return 4 * int64_t(candidateDistances_[candidate]) + tried(candidate);
+}
+
+int64_t ReconfigureProgram::tried(int candidate) const {
+  // Between goals as near, the one that needs fewer helpers. A goal whose attempts failed looks
+  // farther each time, so that another way gets its chance.
+  const Cell& goal = candidates_[candidate].goal;
+  int64_t cost = int64_t(candidates_[candidate].helpers.size());
+  for (const auto& [cell, times] : failedGoals_) {
+    if (cell == goal) cost += 12 * int64_t(times);
   }
   // A cell this mover has stood on looks farther each time: a mover with no way down that goes
   // sideways would otherwise swing between two cells of equal distance for ever (a livelock).
   for (const auto& [cell, times] : visited_) {
-    if (cell == candidates_[candidate].goal) cost += 6 * int64_t(times);
+    if (cell == goal) cost += 6 * int64_t(times);
   }
   return cost;
 }
@@ -92,20 +97,14 @@ bool ReconfigureProgram::offTheEnsemble(const Cell& goal) const {
 }
 
 int ReconfigureProgram::fallingMotion(const Context& context) const {
-  // The lowest goal; between goals as low, the fewest helpers, and the goals tried or stood on
-  // fewer times (the same weights as effective()).
+  // The lowest goal, in quarter motions per layer as effective() counts a distance; then the
+  // same costs of the way as there.
   int best = -1;
   int64_t bestCost = 0;
   for (size_t i = 0; i < candidates_.size(); ++i) {
     const Cell& goal = candidates_[i].goal;
     if (offTheEnsemble(goal)) continue;
-    int64_t cost = 4 * int64_t(goal.z - context.cell().z) + int64_t(candidates_[i].helpers.size());
-    for (const auto& [cell, times] : failedGoals_) {
-      if (cell == goal) cost += 12 * int64_t(times);
-    }
-    for (const auto& [cell, times] : visited_) {
-      if (cell == goal) cost += 6 * int64_t(times);
-    }
+    const int64_t cost = 4 * int64_t(goal.z - context.cell().z) + tried(int(i));
     if (best < 0 || cost < bestCost) {
       best = int(i);
       bestCost = cost;

@@ -48,6 +48,14 @@ def pair(text):
     return low, high
 
 
+def index_range(text):
+    try:
+        first, last = (int(v) for v in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text}: FROM,TO, two case numbers") from None
+    return first, last
+
+
 def draw_size(stream, low, high, spread):
     if spread == "log":
         return int(round(math.exp(stream.uniform(math.log(low), math.log(high)))))
@@ -109,8 +117,7 @@ def main():
     parser.add_argument("--families", default="mound",
                         type=lambda text: text.split(","))
     parser.add_argument("--spread", choices=("uniform", "log"), default="uniform")
-    parser.add_argument("--range", type=lambda text: tuple(int(v) for v in text.split(",")),
-                        dest="case_range")
+    parser.add_argument("--range", type=index_range, dest="case_range")
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--out", default="stress-results")
     options = parser.parse_args()

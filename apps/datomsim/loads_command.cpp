@@ -1,12 +1,6 @@
 // `loads`: the load model of a scene under gravity (docs/mechanics.md): every latch's force,
 // moment and safety factor, the most loaded latches, the tipping check, the safety map.
-#include <fmt/format.h>
-
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
-#include <tuple>
 
 #include "commands.h"
 #include "frontend/loads_on_scene.h"
@@ -21,20 +15,6 @@ struct LoadsCommandArguments {
   std::string gravity = "0,0,-9.81";
   std::string solver = "auto";
 };
-
-// A picture's format is its option's: a file named otherwise would hold what its name does not
-// say.
-void refuseMisnamedPictures(const frontend::LoadsArguments& loads) {
-  for (const auto& [option, path, extension] :
-       {std::tuple{"--png", loads.png, ".png"}, std::tuple{"--svg", loads.svg, ".svg"}}) {
-    std::string given = std::filesystem::path(path).extension().string();
-    for (char& c : given) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (!path.empty() && given != extension) {
-      throw UsageError(
-          fmt::format("{} {}: the picture's file name must end in {}", option, path, extension));
-    }
-  }
-}
 
 }  // namespace
 
@@ -85,7 +65,7 @@ void addLoadsCommand(CLI::App& app, const Reporter& reporter) {
     if (!loads.png.empty()) outputs.push_back({"--png", loads.png});
     if (!loads.svg.empty()) outputs.push_back({"--svg", loads.svg});
     refuseClashes({{"scene", loads.scene}}, outputs);
-    refuseMisnamedPictures(loads);
+    frontend::refuseMisnamedPictures(loads.png, loads.svg);
     loads.parameters.gravity = frontend::parseVector("--gravity", args->gravity);
     loads.method = args->solver == "direct"      ? mechanics::SolverMethod::kDirect
                    : args->solver == "iterative" ? mechanics::SolverMethod::kIterative

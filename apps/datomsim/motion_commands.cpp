@@ -88,17 +88,7 @@ void addReach(CLI::App& app, const Reporter& reporter) {
     if (!pictures.png.empty()) outputs.push_back({"--png", pictures.png});
     if (!pictures.svg.empty()) outputs.push_back({"--svg", pictures.svg});
     refuseClashes({{"scene", args->scene}}, outputs);
-    // A picture's format is its option's: a file named otherwise would hold what its name
-    // does not say.
-    for (const auto& [option, path, extension] :
-         {std::tuple{"--png", pictures.png, ".png"}, std::tuple{"--svg", pictures.svg, ".svg"}}) {
-      std::string given = std::filesystem::path(path).extension().string();
-      for (char& c : given) c = char(std::tolower(static_cast<unsigned char>(c)));
-      if (!path.empty() && given != extension) {
-        throw UsageError(
-            fmt::format("{} {}: the picture's file name must end in {}", option, path, extension));
-      }
-    }
+    frontend::refuseMisnamedPictures(pictures.png, pictures.svg);
     const geometry::Cell goal = parseCell("--goal", args->goal);
     const std::optional<geometry::Cell> start =
         args->start.empty() ? std::nullopt : std::optional(parseCell("--start", args->start));

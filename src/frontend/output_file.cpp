@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <filesystem>
+#include <tuple>
 
 #include "common/atomic_file.h"
 #include "frontend/usage_error.h"
@@ -78,6 +80,18 @@ void refuseClashes(const std::vector<NamedPath>& inputs, const std::vector<Named
         throw UsageError(fmt::format("{} and {} both name {}; choose two files", outputs[k].option,
                                      output.option, output.path));
       }
+    }
+  }
+}
+
+void refuseMisnamedPictures(const std::string& png, const std::string& svg) {
+  for (const auto& [option, path, extension] :
+       {std::tuple{"--png", png, ".png"}, std::tuple{"--svg", svg, ".svg"}}) {
+    std::string given = std::filesystem::path(path).extension().string();
+    for (char& c : given) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (!path.empty() && given != extension) {
+      throw UsageError(
+          fmt::format("{} {}: the picture's file name must end in {}", option, path, extension));
     }
   }
 }

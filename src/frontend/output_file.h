@@ -31,4 +31,8 @@ struct NamedPath {
 // outputs naming the same file, and two outputs both on standard output.
 void refuseClashes(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs);
 
+// Refuses a picture whose file name does not end as its format (--png in .png, --svg in .svg, any
+// case): a file named otherwise would hold what its name does not say. Empty paths are not asked.
+void refuseMisnamedPictures(const std::string& png, const std::string& svg);
+
 }  // namespace datomsim::frontend

@@ -77,6 +77,26 @@ world::ModuleKind kindFor(const std::string& module, const io::Scene& scene) {
   return module.empty() ? scene.moduleKind : *world::moduleKindNamed(module);
 }
 
+void addLoadParameterOptions(CLI::App& command, mechanics::LoadParameters& p) {
+  command.add_option("--radius", p.radius, "Module radius r, m")->capture_default_str();
+  command.add_option("--thickness", p.thickness, "Thickness t of the moving parts, m")
+      ->capture_default_str();
+  command.add_option("--density", p.density, "Density of the material, kg/m^3 (PLA)")
+      ->capture_default_str();
+  command
+      .add_option("--solid-fraction", p.solidFraction,
+                  "Fraction of a module's cell that is material (0 to 1)")
+      ->capture_default_str();
+  command.add_option("--young-modulus", p.youngModulus, "Young's modulus of the material, Pa")
+      ->capture_default_str();
+  command.add_option("--poisson-ratio", p.poissonRatio, "Poisson's ratio of the material")
+      ->capture_default_str();
+  command.add_option("--latch-force", p.latchForce, "The largest force a latch holds, N")
+      ->capture_default_str();
+  command.add_option("--latch-moment", p.latchMoment, "The largest moment a latch holds, N m")
+      ->capture_default_str();
+}
+
 void refuseOtherKindsOptions(const CLI::App& command, world::ModuleKind kind,
                              std::initializer_list<const char*> datomOptions) {
   if (kind == world::ModuleKind::kCatom3D) {

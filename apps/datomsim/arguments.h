@@ -3,6 +3,7 @@
 // of options that do not apply to the modules at hand.
 #pragma once
 
+#include <array>
 #include <initializer_list>
 #include <string>
 
@@ -11,6 +12,7 @@
 #include "frontend/arguments.h"
 #include "frontend/usage_error.h"
 #include "io/scene.h"
+#include "mechanics/load_parameters.h"
 #include "world/module_kind.h"
 
 namespace datomsim::app {
@@ -34,6 +36,15 @@ world::ModuleKind kindFor(const std::string& module, const io::Scene& scene);
 
 // --rules, --attachment and --connectivity, into `rules`.
 void addRuleOptions(CLI::App& command, RuleArguments& rules);
+
+// The load model's parameters (docs/mechanics.md, "Parameters"), into `parameters`, for `loads`
+// and `run --gravity`: --radius, --thickness, --density, --solid-fraction, --young-modulus,
+// --poisson-ratio, --latch-force and --latch-moment.
+void addLoadParameterOptions(CLI::App& command, mechanics::LoadParameters& parameters);
+// Their names, for a command that refuses them where they do not apply.
+inline constexpr std::array<const char*, 8> kLoadParameterOptions = {
+    "--radius",        "--thickness",     "--density",     "--solid-fraction",
+    "--young-modulus", "--poisson-ratio", "--latch-force", "--latch-moment"};
 
 // Refuses the options of the kind the modules are not: those of `datomOptions` the command was
 // given, for Catoms; --rolling, for Datoms.

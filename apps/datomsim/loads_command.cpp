@@ -26,23 +26,7 @@ void addLoadsCommand(CLI::App& app, const Reporter& reporter) {
       "The loads on every latch of a scene under gravity (one node per module, a beam per latch, "
       "the ground layer held): forces, moments, safety factors, tipping, a safety map");
   command->add_option("scene", args->loads.scene, "Scene file (.xml or .json)")->required();
-  command->add_option("--radius", p.radius, "Module radius r, m")->capture_default_str();
-  command->add_option("--thickness", p.thickness, "Thickness t of the moving parts, m")
-      ->capture_default_str();
-  command->add_option("--density", p.density, "Density of the material, kg/m^3 (PLA)")
-      ->capture_default_str();
-  command
-      ->add_option("--solid-fraction", p.solidFraction,
-                   "Fraction of a module's cell that is material (0 to 1)")
-      ->capture_default_str();
-  command->add_option("--young-modulus", p.youngModulus, "Young's modulus of the material, Pa")
-      ->capture_default_str();
-  command->add_option("--poisson-ratio", p.poissonRatio, "Poisson's ratio of the material")
-      ->capture_default_str();
-  command->add_option("--latch-force", p.latchForce, "The largest force a latch holds, N")
-      ->capture_default_str();
-  command->add_option("--latch-moment", p.latchMoment, "The largest moment a latch holds, N m")
-      ->capture_default_str();
+  addLoadParameterOptions(*command, p);
   command->add_option("--gravity", args->gravity, "Gravity x,y,z, m/s^2")->capture_default_str();
   command->add_option("--top", args->loads.top, "How many of the most loaded latches to name")
       ->capture_default_str();

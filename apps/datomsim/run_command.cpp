@@ -16,7 +16,8 @@ namespace datomsim::app {
 namespace {
 
 // The run's figures for a person, on standard error so that the JSON output stays clean.
-void printStatistics(const sim::Statistics& statistics) {
+void printStatistics(const sim::Statistics& statistics,
+                     const std::optional<mechanics::JudgeCounts>& loadChecks) {
   const double wall = statistics.wallSeconds;
   fmt::print(stderr, "events      {} in {:.3f} s of wall time ({:.3g} events/s)\n",
              statistics.events(), wall, wall > 0 ? double(statistics.events()) / wall : 0.0);
@@ -38,6 +39,15 @@ void printStatistics(const sim::Statistics& statistics) {
              double(statistics.reservationWait) / kSecond);
   fmt::print(stderr, "deformations {}\nsimulated   {:.3f} s\n", statistics.deformations,
              double(statistics.simulatedTime) / kSecond);
+  if (loadChecks) {
+    fmt::print(
+        stderr,
+        "gravity     {} changes judged, {} refused; {} pieces solved, {:.1f} modules each "
+        "on average, {} at most\n",
+        loadChecks->changes, loadChecks->refused, loadChecks->solves,
+        loadChecks->solves > 0 ? double(loadChecks->modules) / double(loadChecks->solves) : 0.0,
+        loadChecks->largest);
+  }
 }
 
 }  // namespace
@@ -106,6 +116,19 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
                    "Stop at this simulated time in seconds, for programs that never fall quiet "
                    "(default: when no event remains)")
       ->check(kPositive);
+  command
+      ->add_option("--gravity", args->gravity,
+                   "off, on (0,0,-9.81), or the gravity vector x,y,z in m/s^2: with gravity, a "
+                   "motion or compression that would overload a latch or tip the ensemble is "
+                   "refused, and a scene that cannot hold itself up too (docs/mechanics.md)")
+      ->capture_default_str();
+  addLoadParameterOptions(*command, args->loads);
+  command
+      ->add_option("--load-region", args->loadRegion,
+                   "With gravity: the most modules solved around a change, the nearest first, "
+                   "the rest of their piece held where it is (faster, approximate); 0: whole "
+                   "pieces, exact")
+      ->capture_default_str();
   addOutputOption(*command, args->out);
   command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
   command->add_flag("--stats", args->stats,
@@ -119,6 +142,17 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
     if (!args->trace.empty()) outputs.push_back({"--trace", args->trace});
     refuseClashes({{"scene", args->scene}, {"--target", args->target}}, outputs);
     args->connectivityGiven = command->count("--connectivity") > 0;
+    if (args->gravity == "off") {
+      if (command->count("--load-region") > 0) {
+        throw UsageError("--load-region is how the loads are solved: it needs --gravity on");
+      }
+      for (const char* option : kLoadParameterOptions) {
+        if (command->count(option) > 0) {
+          throw UsageError(
+              fmt::format("{} is a parameter of the load model: it needs --gravity on", option));
+        }
+      }
+    }
     io::Scene scene = unwrap(io::readScene(args->scene));
     // Each kind's own options, as reach refuses them (--connectivity serves both in a run).
     refuseOtherKindsOptions(*command, kindFor(args->module, scene), {"--rules", "--attachment"});
@@ -129,7 +163,7 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
         args->out,
         [&](std::FILE* file) { return frontend::writeRunJson(run.kind.name, run.result, file); },
         reporter);
-    if (args->stats) printStatistics(run.result.statistics);
+    if (args->stats) printStatistics(run.result.statistics, run.result.loadChecks);
     if (run.failure) throw UsageError(*run.failure);
   });
 }

@@ -24,12 +24,13 @@ struct MoveRefusal {
     kCellReserved,     // a cell the motion needs is reserved by a motion in progress
     kModuleBusy,       // the pivot or a helper serves a motion in progress
     kWouldDisconnect,  // connectivity on: some modules would be cut off from the ensemble
+    kWouldOverload,    // gravity on: a latch would carry more than it holds, or the ensemble tip
   };
-  static constexpr int kReasonCount = 7;
+  static constexpr int kReasonCount = 8;
 
   Reason reason = Reason::kInvalidRequest;
   Cell cell;        // the cell at stake, when there is one
-  ModuleId module;  // the module at stake, when there is one
+  ModuleId module;  // the module at stake, when there is one (gravity: an end of the latch)
   // Reservations: the mobile of the motion that holds the cell or module, and when it ends.
   ModuleId holder;
   Time until = 0;
@@ -80,6 +81,8 @@ inline std::string_view toString(MoveRefusal::Reason reason) {
       return "module-busy";
     case MoveRefusal::Reason::kWouldDisconnect:
       return "would-disconnect";
+    case MoveRefusal::Reason::kWouldOverload:
+      return "would-overload";
   }
   return "?";
 }

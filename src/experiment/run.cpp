@@ -9,6 +9,7 @@
 #include "algorithms/registry.h"
 #include "catom3d/catom_rolls.h"
 #include "geometry/cell_text.h"
+#include "mechanics/load_judge.h"
 #include "planner/planner.h"
 #include "record/trace_writer.h"
 
@@ -121,7 +122,7 @@ Result<MobileChoice> chooseMobile(const world::World& world, const Cell& goal,
 bool isRunOutputKey(std::string_view key) {
   // The program's name, what the watch of a target writes, the reason of a failure and the
   // statistics (frontend/run_json.cpp).
-  static constexpr std::array<std::string_view, 18> kKeys = {"program",
+  static constexpr std::array<std::string_view, 19> kKeys = {"program",
                                                              "success",
                                                              "reason",
                                                              "final",
@@ -138,7 +139,8 @@ bool isRunOutputKey(std::string_view key) {
                                                              "events",
                                                              "events_by_kind",
                                                              "deformations",
-                                                             "sim_time_s"};
+                                                             "sim_time_s",
+                                                             "gravity"};
   return std::find(kKeys.begin(), kKeys.end(), key) != kKeys.end();
 }
 
@@ -216,6 +218,12 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     }
   }
   world.latchAllNeighbours();
+  // Gravity on: a scene that cannot hold itself up would break before the first motion.
+  if (const auto& gravity = request.simulation.gravity) {
+    if (Status holds = mechanics::checkAtRest(world, *gravity); !holds) {
+      return Error{"gravity on: the scene cannot hold itself up: " + holds.error()};
+    }
+  }
 
   auto made =
       algorithms::makePrograms(request.program, {request.goal, mobile, shape, request.parameters},
@@ -253,6 +261,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
 
   result.mobile = mobile;
   result.statistics = simulator.statistics();
+  if (const mechanics::JudgeCounts* counts = simulator.loadCounts()) result.loadChecks = *counts;
   if (request.trace) {
     trace.footer(simulator.now(), summaryJson(result.statistics));
     result.trace = trace.text();

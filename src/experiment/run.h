@@ -23,6 +23,7 @@
 #include "datomsim/result.h"
 #include "experiment/reshape.h"
 #include "geometry/cell.h"
+#include "mechanics/load_judge.h"
 #include "motion/motion.h"
 #include "sim/simulator.h"
 #include "sim/statistics.h"
@@ -86,6 +87,8 @@ struct RunResult {
   // trace included, so that the failure can be looked at and counted.
   std::optional<std::string> failure;
   sim::Statistics statistics;
+  // Gravity on: the changes the load judge weighed before they happened.
+  std::optional<mechanics::JudgeCounts> loadChecks;
   std::string trace;  // JSON Lines, when asked for
 };
 

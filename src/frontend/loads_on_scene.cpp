@@ -63,16 +63,6 @@ LoadsOutput loadsOnScene(const world::World& world, const LoadsArguments& args) 
 
 namespace {
 
-// "4.1 mN m": three significant digits in a unit from micro to kilo.
-std::string withPrefix(double value, const char* unit) {
-  const double size = std::abs(value);
-  const auto [scale, prefix] = size >= 1e3    ? std::pair{1e-3, "k"}
-                               : size >= 1    ? std::pair{1.0, ""}
-                               : size >= 1e-3 ? std::pair{1e3, "m"}
-                                              : std::pair{1e6, "u"};
-  return fmt::format("{:.3g} {}{}", value * scale, prefix, unit);
-}
-
 std::string safetyText(double safety) {
   return std::isinf(safety) ? "none (no load)" : fmt::format("{:.3g}", safety);
 }
@@ -89,8 +79,8 @@ std::vector<std::string> loadsSummary(const LoadsOutput& output) {
   std::vector<std::string> lines;
   lines.push_back(fmt::format("{} modules ({} on the ground), {} latches, weight {} ({} each)",
                               model.nodes.size(), supported, model.beams.size(),
-                              withPrefix(solution.totalWeight, "N"),
-                              withPrefix(model.moduleMass * 1000, "g")));
+                              mechanics::quantityText(solution.totalWeight, "N"),
+                              mechanics::quantityText(model.moduleMass * 1000, "g")));
   lines.push_back(fmt::format("solved by {} in {:.3g} s{}", solution.method, output.seconds,
                               solution.iterations > 0
                                   ? fmt::format(" ({} iterations)", solution.iterations)
@@ -99,17 +89,18 @@ std::vector<std::string> loadsSummary(const LoadsOutput& output) {
   for (const uint32_t k : output.mostLoaded) {
     const mechanics::Beam& beam = model.beams[k];
     const mechanics::LatchLoad& load = solution.latches[k];
-    lines.push_back(fmt::format(
-        "latch {}-{}: {} (limit {}), {} (limit {}), safety {}", model.nodes[beam.a].module.value,
-        model.nodes[beam.b].module.value, withPrefix(geometry::norm(load.moment), "N m"),
-        withPrefix(model.parameters.latchMoment, "N m"),
-        withPrefix(geometry::norm(load.force), "N"), withPrefix(model.parameters.latchForce, "N"),
-        safetyText(load.safety)));
+    lines.push_back(fmt::format("latch {}-{}: {} (limit {}), {} (limit {}), safety {}",
+                                model.nodes[beam.a].module.value, model.nodes[beam.b].module.value,
+                                mechanics::quantityText(geometry::norm(load.moment), "N m"),
+                                mechanics::quantityText(model.parameters.latchMoment, "N m"),
+                                mechanics::quantityText(geometry::norm(load.force), "N"),
+                                mechanics::quantityText(model.parameters.latchForce, "N"),
+                                safetyText(load.safety)));
   }
   lines.push_back(output.tipping.tips
                       ? "tips: " + output.tipping.reason
                       : fmt::format("stands: the centre of mass is {} inside its support",
-                                    withPrefix(output.tipping.margin, "m")));
+                                    mechanics::quantityText(output.tipping.margin, "m")));
   return lines;
 }
 
@@ -133,8 +124,8 @@ void writeLoadPictures(const LoadsOutput& output, const LoadsArguments& args,
   picture.lines = {summary.front(),
                    fmt::format("each module coloured by the lowest safety factor of its latches "
                                "(a latch holds {} and {})",
-                               withPrefix(model.parameters.latchMoment, "N m"),
-                               withPrefix(model.parameters.latchForce, "N")),
+                               mechanics::quantityText(model.parameters.latchMoment, "N m"),
+                               mechanics::quantityText(model.parameters.latchForce, "N")),
                    summary.back()};
   if (!args.png.empty()) {
     unwrap(render::writeValueMapPng(picture, args.png));

@@ -96,6 +96,15 @@ void streamRunJson(std::string_view program, const experiment::RunResult& result
   out.field("events_by_kind", byKind);
   out.field("deformations", statistics.deformations);
   out.field("sim_time_s", seconds(statistics.simulatedTime));
+  if (const auto& checks = result.loadChecks) {
+    // Written only with gravity on: a run without keeps its bytes.
+    nlohmann::ordered_json gravity = {{"changes_judged", checks->changes},
+                                      {"refused", checks->refused},
+                                      {"pieces_solved", checks->solves},
+                                      {"modules_solved", checks->modules},
+                                      {"largest_piece", checks->largest}};
+    out.field("gravity", gravity);
+  }
   // Wall time stays out of the JSON, which is the same for the same inputs; --stats prints it.
   out.close();
 }

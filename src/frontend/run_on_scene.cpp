@@ -5,12 +5,42 @@
 #include <cmath>
 #include <utility>
 
+#include "frontend/loads_on_scene.h"
 #include "frontend/usage_error.h"
 #include "io/scene_file.h"
 #include "motion/rule_table.h"
 #include "target/target.h"
 
 namespace datomsim::frontend {
+
+namespace {
+
+// The load model's parameters of a run with gravity on, checked; nothing with it off.
+std::optional<mechanics::LoadParameters> gravityOf(const RunArguments& args,
+                                                   world::ModuleKind kind) {
+  if (args.gravity == "off") return std::nullopt;
+  if (kind != world::ModuleKind::kDatom) {
+    throw UsageError(
+        "--gravity: the load model is the Datom's (docs/mechanics.md); 3D Catoms "
+        "have none");
+  }
+  mechanics::LoadParameters parameters = args.loads;
+  if (args.gravity != "on") {
+    try {
+      parameters.gravity = parseVector("--gravity", args.gravity);
+    } catch (const UsageError&) {
+      throw UsageError(fmt::format(
+          "--gravity \"{}\": on, off, or the gravity vector as three finite numbers x,y,z (m/s^2)",
+          args.gravity));
+    }
+  }
+  if (Status checked = mechanics::checkParameters(parameters); !checked) {
+    throw UsageError("--gravity: " + checked.error());
+  }
+  return parameters;
+}
+
+}  // namespace
 
 RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArguments& args,
                      std::span<const ProgramEntry> added) {
@@ -48,6 +78,12 @@ RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArg
     request.simulation.connectivity = args.rules.connectivity == "on" || !args.connectivityGiven;
     request.simulation.rules.connectivity = request.simulation.connectivity;
   }
+  request.simulation.gravity = gravityOf(args, scene.moduleKind);
+  if (args.loadRegion < 0) {
+    throw UsageError(
+        fmt::format("--load-region {}: a number of modules, 0 or more", args.loadRegion));
+  }
+  request.simulation.loadRegion = size_t(args.loadRegion);
   if (args.maxMotions < 0)
     throw UsageError(fmt::format("--max-motions {}: 1 or more", args.maxMotions));
   request.simulation.maxMotions = args.maxMotions;

@@ -13,8 +13,12 @@
 #include "experiment/run.h"
 #include "frontend/arguments.h"
 #include "io/scene.h"
+#include "mechanics/load_parameters.h"
 
 namespace datomsim::frontend {
+
+// The most modules off the ground solved around a change under gravity, by default.
+inline constexpr int kDefaultLoadRegion = 0;
 
 // What `run` takes, as the command line spells it (cells "x,y,z", parameters "KEY=VALUE"); the
 // Python package fills the same from its keywords.
@@ -32,6 +36,12 @@ struct RunArguments {
   int maxMotions = 0;
   // --connectivity was given (reconfiguration keeps the ensemble connected unless told).
   bool connectivityGiven = false;
+  // Gravity: "off", "on" (0,0,-9.81 m/s^2) or the gravity vector "x,y,z"; with it on, the load
+  // model's parameters (docs/mechanics.md, "Gravity in a run").
+  std::string gravity = "off";
+  mechanics::LoadParameters loads;
+  // The most modules solved around a change; 0: whole pieces (docs/mechanics.md).
+  int loadRegion = kDefaultLoadRegion;
   // Record the trace even with no --trace file (the caller writes it).
   bool wantTrace = false;
 };

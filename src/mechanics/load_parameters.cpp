@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -19,6 +20,15 @@ Status positive(const char* name, double value, const char* unit) {
 }
 
 }  // namespace
+
+std::string quantityText(double value, const char* unit) {
+  const double size = std::abs(value);
+  const auto [scale, prefix] = size >= 1e3    ? std::pair{1e-3, "k"}
+                               : size >= 1    ? std::pair{1.0, ""}
+                               : size >= 1e-3 ? std::pair{1e3, "m"}
+                                              : std::pair{1e6, "u"};
+  return fmt::format("{:.3g} {}{}", value * scale, prefix, unit);
+}
 
 Status checkParameters(const LoadParameters& p) {
   for (const Status& status :

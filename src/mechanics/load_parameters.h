@@ -6,6 +6,8 @@
 // solid fraction and for the latch's strength; docs/mechanics.md says which is which.
 #pragma once
 
+#include <string>
+
 #include "datomsim/result.h"
 #include "geometry/vec3.h"
 
@@ -50,6 +52,10 @@ Status checkParameters(const LoadParameters& parameters);
 
 // The mass of one module, kg: density x solid fraction x 4 sqrt2 r^3.
 double moduleMass(const LoadParameters& parameters);
+
+// "4.1 mN m": a quantity in three significant digits, in its unit with a prefix from micro to
+// kilo, as the loads are written for a person.
+std::string quantityText(double value, const char* unit);
 
 // The section of the latch's beam; the parameters must have passed checkParameters.
 BeamSection beamSection(const LoadParameters& parameters);

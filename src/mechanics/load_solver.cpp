@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
+#include <span>
 #include <utility>
 
 #include <fmt/format.h>
@@ -123,51 +125,12 @@ size_t matrixBytes(const SparseMatrix& matrix) {
 
 }  // namespace
 
-Result<LoadSolution> solveLoads(const LoadModel& model, const SolverOptions& options) {
-  const auto stiffness = stiffnessByDirection(model);
-  const Assembly assembly = assemble(model, stiffness);
-  const Eigen::Index unknowns = assembly.load.size();
-  const size_t freeNodes = size_t(unknowns / kDofs);
-  LoadSolution solution;
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(unknowns);
-  const bool direct = options.method == SolverMethod::kDirect ||
-                      (options.method == SolverMethod::kAutomatic && freeNodes <= kDirectLimit);
-  if (unknowns > 0 && direct) {
-    // Sparse LDL^T with a fill-reducing ordering (AMD): exact to rounding.
-    Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> factor(assembly.stiffness);
-    if (factor.info() != Eigen::Success) {
-      return Error{"the stiffness matrix cannot be factorised: the model is not held still"};
-    }
-    u = factor.solve(assembly.load);
-    solution.method = "sparse LDLT";
-    solution.memoryBytes = 2 * matrixBytes(assembly.stiffness) +
-                           size_t(factor.matrixL().nestedExpression().nonZeros()) * 12;
-  } else if (unknowns > 0) {
-    // Conjugate gradients: only K and a few vectors are held.
-    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower, Eigen::DiagonalPreconditioner<double>>
-        solver;
-    solver.setTolerance(options.tolerance);
-    solver.setMaxIterations(options.maxIterations > 0 ? options.maxIterations : int(unknowns));
-    solver.compute(assembly.stiffness);
-    u = solver.solve(assembly.load);
-    solution.iterations = int(solver.iterations());
-    if (solver.info() != Eigen::Success) {
-      return Error{fmt::format(
-          "the conjugate gradient did not converge in {} iterations (relative residual {:.3g})",
-          solver.iterations(), solver.error())};
-    }
-    solution.method = "conjugate gradient";
-    solution.memoryBytes = matrixBytes(assembly.stiffness) + 8 * sizeof(double) * size_t(unknowns);
-  } else {
-    solution.method = "none (every module is on the ground)";
-  }
-  if (unknowns > 0) {
-    const double loadNorm = assembly.load.norm();
-    const Eigen::VectorXd residual =
-        assembly.stiffness.selfadjointView<Eigen::Lower>() * u - assembly.load;
-    solution.residual = loadNorm > 0 ? residual.norm() / loadNorm : residual.norm();
-  }
-  // Node motions, zero at the supports.
+namespace {
+
+// Each node's motion, zero at the supports, and each latch's load from its ends' motions.
+void readSolution(const LoadModel& model, const Assembly& assembly,
+                  const std::array<BeamMatrix, geometry::kDirectionCount>& stiffness,
+                  const Eigen::VectorXd& u, LoadSolution& solution) {
   const size_t count = model.nodes.size();
   solution.displacement.assign(count, {});
   solution.rotation.assign(count, {});
@@ -177,7 +140,6 @@ Result<LoadSolution> solveLoads(const LoadModel& model, const SolverOptions& opt
     solution.displacement[i] = {u[first], u[first + 1], u[first + 2]};
     solution.rotation[i] = {u[first + 3], u[first + 4], u[first + 5]};
   }
-  // Each latch's load from its ends' motions.
   const auto axes = directionAxes();
   solution.latches.reserve(model.beams.size());
   for (const Beam& beam : model.beams) {
@@ -189,9 +151,96 @@ Result<LoadSolution> solveLoads(const LoadModel& model, const SolverOptions& opt
     solution.latches.push_back(latchLoad(stiffness[beam.direction], ends, axes[beam.direction],
                                          model.section.length, model.parameters));
   }
-  solution.totalWeight =
-      double(count) * model.moduleMass * geometry::norm(model.parameters.gravity);
-  return solution;
+}
+
+// The weights plus a case's loads at the free nodes (a load on a supported node goes to the
+// ground).
+Eigen::VectorXd loadOfCase(const Assembly& assembly, std::span<const NodeLoad> extra) {
+  Eigen::VectorXd load = assembly.load;
+  for (const NodeLoad& added : extra) {
+    const int32_t first = assembly.firstDof[added.node];
+    if (first == kHeld) continue;
+    load.segment<3>(first) += Eigen::Vector3d(added.force.x, added.force.y, added.force.z);
+    load.segment<3>(first + 3) += Eigen::Vector3d(added.moment.x, added.moment.y, added.moment.z);
+  }
+  return load;
+}
+
+}  // namespace
+
+Result<std::vector<LoadSolution>> solveLoadCases(const LoadModel& model,
+                                                 std::span<const std::vector<NodeLoad>> cases,
+                                                 const SolverOptions& options) {
+  const auto stiffness = stiffnessByDirection(model);
+  const Assembly assembly = assemble(model, stiffness);
+  const Eigen::Index unknowns = assembly.load.size();
+  const size_t freeNodes = size_t(unknowns / kDofs);
+  const bool direct = options.method == SolverMethod::kDirect ||
+                      (options.method == SolverMethod::kAutomatic && freeNodes <= kDirectLimit);
+  // One factorisation (or one preconditioner) for every case.
+  std::optional<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>> factor;
+  std::optional<
+      Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower, Eigen::DiagonalPreconditioner<double>>>
+      iterative;
+  size_t memoryBytes = 0;
+  if (unknowns > 0 && direct) {
+    // Sparse LDL^T with a fill-reducing ordering (AMD): exact to rounding.
+    factor.emplace(assembly.stiffness);
+    if (factor->info() != Eigen::Success) {
+      return Error{"the stiffness matrix cannot be factorised: the model is not held still"};
+    }
+    memoryBytes = 2 * matrixBytes(assembly.stiffness) +
+                  size_t(factor->matrixL().nestedExpression().nonZeros()) * 12;
+  } else if (unknowns > 0) {
+    // Conjugate gradients: only K and a few vectors are held.
+    iterative.emplace();
+    iterative->setTolerance(options.tolerance);
+    iterative->setMaxIterations(options.maxIterations > 0 ? options.maxIterations : int(unknowns));
+    iterative->compute(assembly.stiffness);
+    memoryBytes = matrixBytes(assembly.stiffness) + 8 * sizeof(double) * size_t(unknowns);
+  }
+  std::vector<LoadSolution> solutions;
+  solutions.reserve(cases.size());
+  for (const std::vector<NodeLoad>& extra : cases) {
+    LoadSolution solution;
+    solution.memoryBytes = memoryBytes;
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(unknowns);
+    if (unknowns == 0) {
+      solution.method = "none (every module is on the ground)";
+    } else {
+      const Eigen::VectorXd load = loadOfCase(assembly, extra);
+      if (factor) {
+        u = factor->solve(load);
+        solution.method = "sparse LDLT";
+      } else {
+        u = iterative->solve(load);
+        solution.iterations = int(iterative->iterations());
+        if (iterative->info() != Eigen::Success) {
+          return Error{fmt::format(
+              "the conjugate gradient did not converge in {} iterations (relative residual "
+              "{:.3g})",
+              iterative->iterations(), iterative->error())};
+        }
+        solution.method = "conjugate gradient";
+      }
+      const double loadNorm = load.norm();
+      const Eigen::VectorXd residual =
+          assembly.stiffness.selfadjointView<Eigen::Lower>() * u - load;
+      solution.residual = loadNorm > 0 ? residual.norm() / loadNorm : residual.norm();
+    }
+    readSolution(model, assembly, stiffness, u, solution);
+    solution.totalWeight =
+        double(model.nodes.size()) * model.moduleMass * geometry::norm(model.parameters.gravity);
+    solutions.push_back(std::move(solution));
+  }
+  return solutions;
+}
+
+Result<LoadSolution> solveLoads(const LoadModel& model, const SolverOptions& options) {
+  const std::vector<NodeLoad> none;
+  auto solved = solveLoadCases(model, std::span(&none, 1), options);
+  if (!solved) return Error{solved.error()};
+  return std::move(solved->front());
 }
 
 std::vector<double> worstSafetyByNode(const LoadModel& model, const LoadSolution& solution) {

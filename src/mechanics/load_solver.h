@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,19 @@ struct LoadSolution {
 // Solves the model under the gravity of its parameters. Refuses a system the solver cannot
 // solve (a factorisation that fails, an iteration that does not converge).
 Result<LoadSolution> solveLoads(const LoadModel& model, const SolverOptions& options = {});
+
+// A load at a node besides its weight: a force (N) and a moment (N m) at its centre.
+struct NodeLoad {
+  uint32_t node = 0;
+  geometry::Vec3 force;
+  geometry::Vec3 moment;
+};
+
+// Solves the model under its weights plus each case's loads, with one factorisation (or one
+// preconditioner) for them all: a solution per case. Refuses as solveLoads does.
+Result<std::vector<LoadSolution>> solveLoadCases(const LoadModel& model,
+                                                 std::span<const std::vector<NodeLoad>> cases,
+                                                 const SolverOptions& options = {});
 
 // The smallest safety factor of the latches at each node (infinite for a node without latches).
 std::vector<double> worstSafetyByNode(const LoadModel& model, const LoadSolution& solution);

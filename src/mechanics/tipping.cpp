@@ -58,24 +58,24 @@ double signedMargin(const GroundPoint& p, const std::vector<GroundPoint>& hull) 
 
 }  // namespace
 
-Tipping checkTipping(const LoadModel& model) {
-  Tipping result;
-  // Every module weighs the same: the centre of mass is the mean of the centres.
-  geometry::Vec3 sum;
+std::vector<GroundPoint> supportOf(std::span<const geometry::Vec3> groundCentres, double radius) {
   std::vector<GroundPoint> contacts;
-  const double half = model.parameters.radius / 2;
-  for (const Node& node : model.nodes) {
-    sum += node.position;
-    if (!node.supported) continue;
+  contacts.reserve(4 * groundCentres.size());
+  const double half = radius / 2;
+  for (const geometry::Vec3& centre : groundCentres) {
     for (const double dx : {-half, half}) {
-      for (const double dy : {-half, half}) {
-        contacts.push_back({node.position.x + dx, node.position.y + dy});
-      }
+      for (const double dy : {-half, half}) contacts.push_back({centre.x + dx, centre.y + dy});
     }
   }
-  result.centreOfMass = sum / double(model.nodes.size());
-  result.support = convexHull(std::move(contacts));
-  const geometry::Vec3& g = model.parameters.gravity;
+  return convexHull(std::move(contacts));
+}
+
+Tipping tippingOver(const geometry::Vec3& centreOfMass, std::vector<GroundPoint> support,
+                    const geometry::Vec3& gravity) {
+  Tipping result;
+  result.centreOfMass = centreOfMass;
+  result.support = std::move(support);
+  const geometry::Vec3& g = gravity;
   if (!(g.z < 0)) {
     result.tips = true;
     result.reason = "gravity does not point down: nothing presses the ensemble on the ground";
@@ -93,6 +93,18 @@ Tipping checkTipping(const LoadModel& model) {
         -result.margin * 1000);
   }
   return result;
+}
+
+Tipping checkTipping(const LoadModel& model) {
+  // Every module weighs the same: the centre of mass is the mean of the centres.
+  geometry::Vec3 sum;
+  std::vector<geometry::Vec3> ground;
+  for (const Node& node : model.nodes) {
+    sum += node.position;
+    if (node.supported) ground.push_back(node.position);
+  }
+  return tippingOver(sum / double(model.nodes.size()), supportOf(ground, model.parameters.radius),
+                     model.parameters.gravity);
 }
 
 }  // namespace datomsim::mechanics

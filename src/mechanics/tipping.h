@@ -8,6 +8,7 @@
 // reported as tipping).
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,13 @@ struct Tipping {
   // Why it tips, in words; empty when it stands.
   std::string reason;
 };
+
+// The support of modules on the ground layer at these centres: the convex hull of their contacts.
+std::vector<GroundPoint> supportOf(std::span<const geometry::Vec3> groundCentres, double radius);
+
+// The tipping check of a centre of mass over a support, under gravity.
+Tipping tippingOver(const geometry::Vec3& centreOfMass, std::vector<GroundPoint> support,
+                    const geometry::Vec3& gravity);
 
 // The tipping check of a model. Gravity that does not point down (its z not negative) presses
 // nothing on the ground: the ensemble is said to tip, and the reason says why.

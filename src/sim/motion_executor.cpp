@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 
 #include "catom3d/catom_rolls.h"
 #include "geometry/lattice.h"
@@ -49,7 +50,9 @@ MotionExecutor::MotionExecutor(world::World& world, const motion::RuleTable& tab
       announce_(announce),
       times_(times),
       limits_(limits),
-      motionOf_() {}
+      motionOf_() {
+  if (limits_.gravity) loads_.emplace(*limits_.gravity, limits_.loadRegion);
+}
 
 bool MotionExecutor::isQueued(uint32_t index) const {
   return std::any_of(queue_.begin(), queue_.end(),
@@ -172,25 +175,16 @@ MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& reques
       return refuse(index, std::move(refused));
     }
   }
-  if (limits_.connectivity) {
-    // The mobile lets go of all but its pivot, the pivot of what the model says (a Datom's of
-    // what U moves but the hinge), and double deformations will let go of what their second
-    // piston moves.
-    std::vector<world::BrokenLatch> broken;
-    const int hinge = geometry::oppositeDirection(model_->mobileDirection(motion.rule));
-    for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
-      if (direction == hinge) continue;
-      world::addBrokenLatch(world_, mobile, direction, broken);
+  if (limits_.connectivity || loads_) {
+    const std::vector<world::BrokenLatch> broken = latchesLetGo(mobile, *pivot, motion);
+    if (limits_.connectivity) {
+      if (auto split = splitBy(broken)) return refuse(index, std::move(*split));
     }
-    for (const int direction : model_->pivotLetsGo(motion.rule)) {
-      world::addBrokenLatch(world_, *pivot, direction, broken);
+    if (loads_) {
+      if (auto overload = judgeLoads(index, std::get<uint32_t>(serving), motion, broken)) {
+        return refuse(index, std::move(*overload));
+      }
     }
-    for (const motion::Deformation& d : motion.deformations) {
-      if (d.secondAxis < 0) continue;
-      const auto more = latchesMovedBy(*world_.indexOf(d.module), d.secondAxis);
-      broken.insert(broken.end(), more.begin(), more.end());
-    }
-    if (auto split = splitBy(std::move(broken))) return refuse(index, std::move(*split));
   }
   if (model_->rolls()) {
     beginRoll(index, motion, std::move(claim));
@@ -198,6 +192,70 @@ MoveResult MotionExecutor::tryStart(uint32_t index, const motion::Motion& reques
     begin(index, motion, std::move(claim));
   }
   return MoveResult::started();
+}
+
+std::vector<world::BrokenLatch> MotionExecutor::latchesLetGo(const Module& mobile,
+                                                             const Module& pivot,
+                                                             const motion::Motion& motion) const {
+  // The mobile lets go of all but its pivot, the pivot of what the model says (a Datom's of what
+  // U moves but the hinge), and double deformations will let go of what their second piston
+  // moves.
+  std::vector<world::BrokenLatch> broken;
+  const int hinge = geometry::oppositeDirection(model_->mobileDirection(motion.rule));
+  for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
+    if (direction == hinge) continue;
+    world::addBrokenLatch(world_, mobile, direction, broken);
+  }
+  for (const int direction : model_->pivotLetsGo(motion.rule)) {
+    world::addBrokenLatch(world_, pivot, direction, broken);
+  }
+  for (const motion::Deformation& d : motion.deformations) {
+    if (d.secondAxis < 0) continue;
+    const auto more = latchesMovedBy(*world_.indexOf(d.module), d.secondAxis);
+    broken.insert(broken.end(), more.begin(), more.end());
+  }
+  return broken;
+}
+
+std::vector<mechanics::Hanging> MotionExecutor::hangingNow() const {
+  std::vector<mechanics::Hanging> hanging;
+  for (const ActiveMotion& active : motions_) {
+    if (active.active) hanging.push_back({active.mobile, active.pivot, active.plan.from});
+  }
+  return hanging;
+}
+
+std::optional<MoveRefusal> MotionExecutor::judgeLoads(uint32_t mobileIndex, uint32_t pivotIndex,
+                                                      const motion::Motion& motion,
+                                                      std::span<const world::BrokenLatch> broken) {
+  // The mobile hangs on its pivot from the start of the motion to its end: judged at both ends
+  // of its way, with the motions in progress hanging as they are.
+  const std::vector<mechanics::Hanging> hanging = hangingNow();
+  const std::array<geometry::Cell, 2> places = {motion.from, motion.goal};
+  const auto overload =
+      loads_->judge(world_, {broken, hanging, mechanics::Mover{mobileIndex, pivotIndex, places}});
+  if (!overload) return std::nullopt;
+  std::string where;
+  if (overload->moverAt) {
+    where = fmt::format(", with the mobile hanging on pivot {} {}",
+                        world_.modules()[pivotIndex].id.value,
+                        *overload->moverAt == motion.from
+                            ? std::string("at its start")
+                            : "at its goal " + geometry::toString(*overload->moverAt));
+  }
+  MoveRefusal refused = refusal(MoveRefusal::Reason::kWouldOverload, overload->text + where);
+  refused.cell = overload->moverAt.value_or(motion.goal);
+  refused.module = overload->a;
+  return refused;
+}
+
+std::optional<std::string> MotionExecutor::judgeCompression(uint32_t index, int worldAxis) {
+  if (!loads_) return std::nullopt;
+  const std::vector<world::BrokenLatch> broken = latchesMovedBy(index, worldAxis);
+  const std::vector<mechanics::Hanging> hanging = hangingNow();
+  const auto overload = loads_->judge(world_, {broken, hanging, std::nullopt});
+  if (!overload) return std::nullopt;
+  return overload->text;
 }
 
 int MotionExecutor::occupySlot(ActiveMotion planned, Claim claim, Time until) {

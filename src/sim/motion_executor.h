@@ -33,6 +33,8 @@
 #include "datomsim/move_result.h"
 #include "datomsim/result.h"
 #include "geometry/orientation.h"
+#include "mechanics/load_judge.h"
+#include "mechanics/load_parameters.h"
 #include "motion/motion.h"
 #include "motion/motion_model.h"
 #include "motion/rule_table.h"
@@ -78,6 +80,11 @@ struct MotionLimits {
   // The modules' kind, whose motion model judges the motions, and the 3D Catom's rule set.
   world::ModuleKind moduleKind = world::ModuleKind::kDatom;
   catom3d::RollRules rolling = catom3d::RollRules::kSymmetric;
+  // Gravity on: the load model's parameters; a motion that would overload a latch or tip the
+  // ensemble is refused (mechanics/load_judge.h).
+  std::optional<mechanics::LoadParameters> gravity = std::nullopt;
+  // The most modules solved around a change (mechanics::LoadJudge); 0: whole pieces.
+  size_t loadRegion = 0;
 };
 
 class MotionExecutor {
@@ -125,6 +132,11 @@ class MotionExecutor {
   // that motions in progress will still break (double deformations yet to switch); sorted
   // indices, empty when nothing splits.
   std::vector<uint32_t> cutOff(std::vector<world::BrokenLatch> broken) const;
+  // Gravity on: why compressing a module's piston along a world axis now would overload a latch
+  // or tip the ensemble, or nothing (always nothing with gravity off).
+  std::optional<std::string> judgeCompression(uint32_t index, int worldAxis);
+  // What the load judge has done; nothing with gravity off.
+  const mechanics::JudgeCounts* loadCounts() const { return loads_ ? &loads_->counts() : nullptr; }
   // The latches a module's piston would break if compressed now, both ends.
   std::vector<world::BrokenLatch> latchesMovedBy(uint32_t index, int worldAxis) const;
 
@@ -144,6 +156,17 @@ class MotionExecutor {
   // The geometry of the two quarter turns, worked out when the motion starts.
   ActiveMotion plan(const motion::Motion& motion, uint32_t mobileIndex, uint32_t pivotIndex) const;
   MoveRefusal refuse(uint32_t mobileIndex, MoveRefusal refusal) const;
+  // The latches a motion lets go when it starts, both ends.
+  std::vector<world::BrokenLatch> latchesLetGo(const world::Module& mobile,
+                                               const world::Module& pivot,
+                                               const motion::Motion& motion) const;
+  // The mobiles of the motions in progress, hanging on their pivots at their starts.
+  std::vector<mechanics::Hanging> hangingNow() const;
+  // Gravity on: the refusal of a motion whose mobile, hanging on its pivot at its start or its
+  // goal with `broken` let go, would overload a latch or tip the ensemble; or nullopt.
+  std::optional<MoveRefusal> judgeLoads(uint32_t mobileIndex, uint32_t pivotIndex,
+                                        const motion::Motion& motion,
+                                        std::span<const world::BrokenLatch> broken);
   // The refusal of a motion whose broken latches would cut modules off, or nullopt.
   std::optional<MoveRefusal> splitBy(std::vector<world::BrokenLatch> broken) const;
   int freeSlot();
@@ -159,6 +182,7 @@ class MotionExecutor {
   const Announcer& announce_;
   MotionTimes times_;
   MotionLimits limits_;
+  std::optional<mechanics::LoadJudge> loads_;
   Reservations reservations_;
   std::vector<ActiveMotion> motions_;
   int activeCount_ = 0;

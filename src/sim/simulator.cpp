@@ -51,7 +51,8 @@ Simulator::Simulator(world::World world, const motion::RuleTable& table, Simulat
       mechanics_(world_, agenda_, announce_, options.deformationTime),
       motions_(world_, table, options.rules, mechanics_, agenda_, announce_,
                {options.quarterTurnTime, options.deformationTime},
-               {options.maxMotions, options.connectivity, options.moduleKind, options.rolling}),
+               {options.maxMotions, options.connectivity, options.moduleKind, options.rolling,
+                options.gravity, options.loadRegion}),
       transport_(world_, motions_, agenda_, announce_,
                  {options.messageDelay, options.messageJitter}, options.seed) {
   announce_.subscribeToChanges(&statistics_);
@@ -261,6 +262,16 @@ Status Simulator::compress(uint32_t index, int ownPiston) {
                       world_.modules()[index].id.value, ownPiston, motion::describeCutOff(ids))};
       announce_(&Observer::deformationRefused, agenda_.now(), world_.modules()[index].id,
                 "would-disconnect", allowed.error());
+      return allowed;
+    }
+  }
+  if (allowed.ok()) {
+    const int axis = world_.modules()[index].orientation.worldAxis(ownPiston);
+    if (auto overload = motions_.judgeCompression(index, axis)) {
+      allowed = Error{fmt::format("module {}: cannot compress piston {}: {}",
+                                  world_.modules()[index].id.value, ownPiston, *overload)};
+      announce_(&Observer::deformationRefused, agenda_.now(), world_.modules()[index].id,
+                "would-overload", allowed.error());
       return allowed;
     }
   }

@@ -58,6 +58,13 @@ struct SimulationOptions {
   int maxMotions = 0;
   // Refuse a motion or deformation that would cut modules off from their piece of the ensemble.
   bool connectivity = false;
+  // Gravity on: the load model's parameters (mechanics/load_parameters.h, checked by the caller).
+  // A motion or a compression that would overload a latch or tip the ensemble is refused
+  // (mechanics/load_judge.h); the scene itself is the caller's to check before the run.
+  std::optional<mechanics::LoadParameters> gravity;
+  // The most modules solved around a change, the nearest first, the rest of their piece held
+  // (an approximation, docs/mechanics.md); 0: whole pieces, exact.
+  size_t loadRegion = 0;
   // The module the algorithms move. Rules judged by a pivot for an imagined mobile ignore it
   // (it is not part of the fixed world, paper section VII).
   std::optional<ModuleId> mobile;
@@ -105,6 +112,8 @@ class Simulator {
   // The world as the run left it, moved out of a simulator that is done with.
   world::World ended() && { return std::move(world_); }
   const Statistics& statistics() const { return statistics_.statistics(); }
+  // What the load judge has done, with gravity on; nothing with gravity off.
+  const mechanics::JudgeCounts* loadCounts() const { return motions_.loadCounts(); }
   Time now() const { return agenda_.now(); }
   // Whether events remain (a run stopped at its `until`).
   bool pending() const { return !agenda_.empty(); }

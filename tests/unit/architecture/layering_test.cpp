@@ -38,7 +38,7 @@ TEST(Layering, TheTableNamesTheLayersAndWhatTheyUse) {
   const auto layers = projectLayers();
   ASSERT_GE(layers.size(), 14u);
   EXPECT_EQ(layers.at("common").uses.size(), 0u);
-  EXPECT_EQ(layers.at("sim").uses, (std::set<std::string>{"program", "catom3d"}));
+  EXPECT_EQ(layers.at("sim").uses, (std::set<std::string>{"program", "catom3d", "mechanics"}));
   EXPECT_EQ(layers.at("program").never, std::set<std::string>{"world"});
   for (const auto& [name, layer] : layers) {
     for (const std::string& used : layer.uses) {

@@ -48,7 +48,7 @@ LoadsOutput loadsOnScene(const world::World& world, const LoadsArguments& args) 
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   output.tipping = mechanics::checkTipping(output.model);
   // The most loaded latches: the lowest safety factors, ties by order of the beams.
-  const std::vector<mechanics::LatchLoad>& latches = output.solution.latches;
+  const std::vector<elastic::LatchLoad>& latches = output.solution.latches;
   std::vector<uint32_t> order(latches.size());
   std::iota(order.begin(), order.end(), 0u);
   const size_t top = std::min(order.size(), size_t(args.top));
@@ -85,7 +85,7 @@ std::vector<std::string> loadsSummary(const LoadsOutput& output) {
   size_t supported = 0;
   for (const mechanics::Node& node : model.nodes) supported += node.supported ? 1 : 0;
   size_t overloaded = 0;
-  for (const mechanics::LatchLoad& latch : solution.latches) overloaded += latch.safety < 1 ? 1 : 0;
+  for (const elastic::LatchLoad& latch : solution.latches) overloaded += latch.safety < 1 ? 1 : 0;
   std::vector<std::string> lines;
   lines.push_back(fmt::format("{} modules ({} on the ground), {} latches, weight {} ({} each)",
                               model.nodes.size(), supported, model.beams.size(),
@@ -98,7 +98,7 @@ std::vector<std::string> loadsSummary(const LoadsOutput& output) {
   lines.push_back(fmt::format("latches overloaded (safety below 1): {}", overloaded));
   for (const uint32_t k : output.mostLoaded) {
     const mechanics::Beam& beam = model.beams[k];
-    const mechanics::LatchLoad& load = solution.latches[k];
+    const elastic::LatchLoad& load = solution.latches[k];
     lines.push_back(fmt::format(
         "latch {}-{}: {} (limit {}), {} (limit {}), safety {}", model.nodes[beam.a].module.value,
         model.nodes[beam.b].module.value, withPrefix(geometry::norm(load.moment), "N m"),

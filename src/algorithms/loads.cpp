@@ -208,7 +208,7 @@ void LoadsProgram::heard(Context& context) {
     return;
   }
   // The root: the tree is whole, and so are the first residual's sums.
-  ff_ = subtree_.rr;
+  ff_ = rr_ = subtree_.rr;
   rz_ = subtree_.rz;
   if (subtree_.held == 0) {
     context.log("loads: no module of the ensemble is on the ground; nothing holds it");
@@ -296,11 +296,12 @@ void LoadsProgram::reduced(Context& context) {
     if (!(first > 0)) {
       // K is positive definite when every module is held: a curvature that is not positive says
       // the iteration has broken down.
-      return finish(context, DoneMsg{std::sqrt(rz_ / ff_), iterations_, false});
+      return finish(context, DoneMsg{std::sqrt(rr_ / ff_), iterations_, false});
     }
     return advance(context, rz_ / first);
   }
   ++iterations_;
+  rr_ = second;
   const double residual = std::sqrt(second / ff_);
   if (residual <= settings_.tolerance) {
     return finish(context, DoneMsg{residual, iterations_, true});
@@ -355,6 +356,7 @@ void LoadsProgram::report(Report& report) const {
     report.set("iterations", done_->iterations);
     if (std::isfinite(done_->residual)) report.set("residual", done_->residual);
     report.set("converged", done_->converged ? 1 : 0);
+    report.set("modules", subtree_.modules);
   }
   if (!done_->converged) return;
   double safety = std::numeric_limits<double>::infinity(), force = 0, moment = 0;

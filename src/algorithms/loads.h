@@ -103,7 +103,8 @@ class LoadsProgram final : public Program {
   void onMessage(Context& context, int connector, const Message& message) override;
   // Every module: "safety" (the smallest safety factor of its latches, when one carries
   // something), "force" and "moment" (the largest of its latches, N and N m). The root also:
-  // "iterations", "residual" (|K u - f| / |f| as the iteration measured it) and "converged".
+  // "iterations", "residual" (|K u - f| / |f| as the iteration measured it), "converged" and
+  // "modules" (how many the tree reached: the modules that took part).
   void report(Report& report) const override;
 
  private:
@@ -170,8 +171,9 @@ class LoadsProgram final : public Program {
   bool directionReady_ = false;
   int directions_ = 0;
 
-  // The root's iteration: r.z, |f|^2, the iterations so far.
+  // The root's iteration: r.z, r.r and |f|^2, the iterations so far.
   double rz_ = 0;
+  double rr_ = 0;
   double ff_ = 0;
   int32_t iterations_ = 0;
 

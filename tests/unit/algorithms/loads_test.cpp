@@ -62,6 +62,7 @@ struct Distributed {
   double iterations = 0;
   double residual = 0;
   double converged = 0;
+  double tookPart = 0;  // the modules the tree reached, as the root counted them
   std::map<std::string, uint64_t, std::less<>> messages;
 };
 
@@ -86,7 +87,7 @@ Distributed distributed(world::World world, const Cell& root,
   }
   for (const auto& [key, field] :
        {std::pair{"iterations", &out.iterations}, std::pair{"residual", &out.residual},
-        std::pair{"converged", &out.converged}}) {
+        std::pair{"converged", &out.converged}, std::pair{"modules", &out.tookPart}}) {
     const auto values = run->report.cellValues(key);
     // No residual when nothing holds the ensemble: the iteration never started.
     if (values.empty() && std::string_view(key) == "residual") continue;
@@ -137,6 +138,7 @@ TEST(DistributedLoads, OnRandomScenesTheLoadsAreTheCentralisedSolversWithinTheSt
     EXPECT_EQ(found.converged, 1) << "seed " << seed;
     EXPECT_LE(found.residual, 1e-10) << "seed " << seed;
     EXPECT_EQ(found.modules.size(), world->size()) << "seed " << seed;
+    EXPECT_EQ(found.tookPart, double(world->size())) << "seed " << seed;
     EXPECT_LT(disagreement(expected, found.modules), kAgreement) << "seed " << seed;
   }
 }

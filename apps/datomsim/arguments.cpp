@@ -77,7 +77,7 @@ world::ModuleKind kindFor(const std::string& module, const io::Scene& scene) {
   return module.empty() ? scene.moduleKind : *world::moduleKindNamed(module);
 }
 
-void addLoadParameterOptions(CLI::App& command, mechanics::LoadParameters& p) {
+void addLoadParameterOptions(CLI::App& command, elastic::LoadParameters& p) {
   command.add_option("--radius", p.radius, "Module radius r, m")->capture_default_str();
   command.add_option("--thickness", p.thickness, "Thickness t of the moving parts, m")
       ->capture_default_str();

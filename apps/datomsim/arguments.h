@@ -9,10 +9,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "elastic/load_parameters.h"
 #include "frontend/arguments.h"
 #include "frontend/usage_error.h"
 #include "io/scene.h"
-#include "mechanics/load_parameters.h"
 #include "world/module_kind.h"
 
 namespace datomsim::app {
@@ -40,7 +40,7 @@ void addRuleOptions(CLI::App& command, RuleArguments& rules);
 // The load model's parameters (docs/mechanics.md, "Parameters"), into `parameters`, for `loads`
 // and `run --gravity`: --radius, --thickness, --density, --solid-fraction, --young-modulus,
 // --poisson-ratio, --latch-force and --latch-moment.
-void addLoadParameterOptions(CLI::App& command, mechanics::LoadParameters& parameters);
+void addLoadParameterOptions(CLI::App& command, elastic::LoadParameters& parameters);
 // Their names, for a command that refuses them where they do not apply.
 inline constexpr std::array<const char*, 8> kLoadParameterOptions = {
     "--radius",        "--thickness",     "--density",     "--solid-fraction",

@@ -20,7 +20,7 @@ struct LoadsCommandArguments {
 
 void addLoadsCommand(CLI::App& app, const Reporter& reporter) {
   auto args = std::make_shared<LoadsCommandArguments>();
-  mechanics::LoadParameters& p = args->loads.parameters;
+  elastic::LoadParameters& p = args->loads.parameters;
   CLI::App* command = app.add_subcommand(
       "loads",
       "The loads on every latch of a scene under gravity (one node per module, a beam per latch, "

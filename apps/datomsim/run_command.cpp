@@ -110,7 +110,8 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
                    "A program parameter KEY=VALUE (repeatable; over the scene's \"parameters\"); "
                    "the program's own are listed in its docs")
       ->allow_extra_args(false);
-  command->add_option("--root", args->root, "flood: the root cell x,y,z (as --param root=X,Y,Z)");
+  command->add_option("--root", args->root,
+                      "flood, loads: the root cell x,y,z (as --param root=X,Y,Z)");
   command
       ->add_option("--until", args->untilS,
                    "Stop at this simulated time in seconds, for programs that never fall quiet "

@@ -121,7 +121,7 @@ double numberArgument(const py::handle& value, const std::string& name) {
 // The JSON text of `loads --out`; the pictures asked for written as the command writes them.
 std::string loads(const Scene& scene, const py::dict& options) {
   frontend::LoadsArguments args;
-  mechanics::LoadParameters& p = args.parameters;
+  elastic::LoadParameters& p = args.parameters;
   const std::vector<std::pair<std::string, double*>> numbers = {
       {"radius", &p.radius},
       {"thickness", &p.thickness},

@@ -9,6 +9,7 @@
 #include "algorithms/flood.h"
 #include "algorithms/follow_gradient.h"
 #include "algorithms/gradient.h"
+#include "algorithms/loads.h"
 #include "algorithms/reconfigure.h"
 #include "algorithms/walkers.h"
 
@@ -41,6 +42,7 @@ std::span<const ProgramEntry> builtInEntries() {
   // The built-in programs written on the public API as a researcher's are: one line each.
   static const std::vector<ProgramEntry> entries = {
       FloodProgram::entry(),
+      LoadsProgram::entry(),
   };
   return entries;
 }

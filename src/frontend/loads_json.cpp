@@ -23,7 +23,7 @@ nlohmann::ordered_json safetyJson(double safety) {
 void streamLoadsJson(const LoadsOutput& output, JsonObjectStream::Emit emit) {
   const mechanics::LoadModel& model = output.model;
   const mechanics::LoadSolution& solution = output.solution;
-  const mechanics::LoadParameters& p = model.parameters;
+  const elastic::LoadParameters& p = model.parameters;
   JsonObjectStream out(std::move(emit));
   out.field("program", "loads");
   out.field("parameters", {{"radius_m", p.radius},
@@ -53,7 +53,7 @@ void streamLoadsJson(const LoadsOutput& output, JsonObjectStream::Emit emit) {
                         {"reason", tipping.reason}});
   size_t overloaded = 0;
   double worst = INFINITY;
-  for (const mechanics::LatchLoad& latch : solution.latches) {
+  for (const elastic::LatchLoad& latch : solution.latches) {
     overloaded += latch.safety < 1 ? 1 : 0;
     worst = std::min(worst, latch.safety);
   }
@@ -67,7 +67,7 @@ void streamLoadsJson(const LoadsOutput& output, JsonObjectStream::Emit emit) {
   // Every latch in the model's order; "most_loaded" indexes this list.
   out.records("loads", model.beams.size(), [&](size_t k) {
     const mechanics::Beam& beam = model.beams[k];
-    const mechanics::LatchLoad& load = solution.latches[k];
+    const elastic::LatchLoad& load = solution.latches[k];
     return nlohmann::ordered_json{{"a", model.nodes[beam.a].module.value},
                                   {"b", model.nodes[beam.b].module.value},
                                   {"force_n", vectorJson(load.force)},

@@ -48,7 +48,7 @@ LoadsOutput loadsOnScene(const world::World& world, const LoadsArguments& args) 
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   output.tipping = mechanics::checkTipping(output.model);
   // The most loaded latches: the lowest safety factors, ties by order of the beams.
-  const std::vector<mechanics::LatchLoad>& latches = output.solution.latches;
+  const std::vector<elastic::LatchLoad>& latches = output.solution.latches;
   std::vector<uint32_t> order(latches.size());
   std::iota(order.begin(), order.end(), 0u);
   const size_t top = std::min(order.size(), size_t(args.top));
@@ -75,12 +75,12 @@ std::vector<std::string> loadsSummary(const LoadsOutput& output) {
   size_t supported = 0;
   for (const mechanics::Node& node : model.nodes) supported += node.supported ? 1 : 0;
   size_t overloaded = 0;
-  for (const mechanics::LatchLoad& latch : solution.latches) overloaded += latch.safety < 1 ? 1 : 0;
+  for (const elastic::LatchLoad& latch : solution.latches) overloaded += latch.safety < 1 ? 1 : 0;
   std::vector<std::string> lines;
   lines.push_back(fmt::format("{} modules ({} on the ground), {} latches, weight {} ({} each)",
                               model.nodes.size(), supported, model.beams.size(),
-                              mechanics::quantityText(solution.totalWeight, "N"),
-                              mechanics::quantityText(model.moduleMass * 1000, "g")));
+                              elastic::quantityText(solution.totalWeight, "N"),
+                              elastic::quantityText(model.moduleMass * 1000, "g")));
   lines.push_back(fmt::format("solved by {} in {:.3g} s{}", solution.method, output.seconds,
                               solution.iterations > 0
                                   ? fmt::format(" ({} iterations)", solution.iterations)
@@ -88,19 +88,18 @@ std::vector<std::string> loadsSummary(const LoadsOutput& output) {
   lines.push_back(fmt::format("latches overloaded (safety below 1): {}", overloaded));
   for (const uint32_t k : output.mostLoaded) {
     const mechanics::Beam& beam = model.beams[k];
-    const mechanics::LatchLoad& load = solution.latches[k];
-    lines.push_back(fmt::format("latch {}-{}: {} (limit {}), {} (limit {}), safety {}",
-                                model.nodes[beam.a].module.value, model.nodes[beam.b].module.value,
-                                mechanics::quantityText(geometry::norm(load.moment), "N m"),
-                                mechanics::quantityText(model.parameters.latchMoment, "N m"),
-                                mechanics::quantityText(geometry::norm(load.force), "N"),
-                                mechanics::quantityText(model.parameters.latchForce, "N"),
-                                safetyText(load.safety)));
+    const elastic::LatchLoad& load = solution.latches[k];
+    lines.push_back(fmt::format(
+        "latch {}-{}: {} (limit {}), {} (limit {}), safety {}", model.nodes[beam.a].module.value,
+        model.nodes[beam.b].module.value, elastic::quantityText(geometry::norm(load.moment), "N m"),
+        elastic::quantityText(model.parameters.latchMoment, "N m"),
+        elastic::quantityText(geometry::norm(load.force), "N"),
+        elastic::quantityText(model.parameters.latchForce, "N"), safetyText(load.safety)));
   }
   lines.push_back(output.tipping.tips
                       ? "tips: " + output.tipping.reason
                       : fmt::format("stands: the centre of mass is {} inside its support",
-                                    mechanics::quantityText(output.tipping.margin, "m")));
+                                    elastic::quantityText(output.tipping.margin, "m")));
   return lines;
 }
 
@@ -124,8 +123,8 @@ void writeLoadPictures(const LoadsOutput& output, const LoadsArguments& args,
   picture.lines = {summary.front(),
                    fmt::format("each module coloured by the lowest safety factor of its latches "
                                "(a latch holds {} and {})",
-                               mechanics::quantityText(model.parameters.latchMoment, "N m"),
-                               mechanics::quantityText(model.parameters.latchForce, "N")),
+                               elastic::quantityText(model.parameters.latchMoment, "N m"),
+                               elastic::quantityText(model.parameters.latchForce, "N")),
                    summary.back()};
   if (!args.png.empty()) {
     unwrap(render::writeValueMapPng(picture, args.png));

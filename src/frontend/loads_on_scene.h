@@ -19,7 +19,7 @@ namespace datomsim::frontend {
 
 struct LoadsArguments {
   std::string scene, out, png, svg;
-  mechanics::LoadParameters parameters;
+  elastic::LoadParameters parameters;
   // How many of the most loaded latches the summary names and the pictures mark.
   int top = 5;
   // The pictures' view: "side" (along +y) or "top".

@@ -16,15 +16,14 @@ namespace datomsim::frontend {
 namespace {
 
 // The load model's parameters of a run with gravity on, checked; nothing with it off.
-std::optional<mechanics::LoadParameters> gravityOf(const RunArguments& args,
-                                                   world::ModuleKind kind) {
+std::optional<elastic::LoadParameters> gravityOf(const RunArguments& args, world::ModuleKind kind) {
   if (args.gravity == "off") return std::nullopt;
   if (kind != world::ModuleKind::kDatom) {
     throw UsageError(
         "--gravity: the load model is the Datom's (docs/mechanics.md); 3D Catoms "
         "have none");
   }
-  mechanics::LoadParameters parameters = args.loads;
+  elastic::LoadParameters parameters = args.loads;
   if (args.gravity != "on") {
     try {
       parameters.gravity = parseVector("--gravity", args.gravity);
@@ -34,7 +33,7 @@ std::optional<mechanics::LoadParameters> gravityOf(const RunArguments& args,
           args.gravity));
     }
   }
-  if (Status checked = mechanics::checkParameters(parameters); !checked) {
+  if (Status checked = elastic::checkParameters(parameters); !checked) {
     throw UsageError("--gravity: " + checked.error());
   }
   return parameters;

@@ -10,10 +10,10 @@
 
 #include "algorithms/registry.h"
 #include "datomsim/program.h"
+#include "elastic/load_parameters.h"
 #include "experiment/run.h"
 #include "frontend/arguments.h"
 #include "io/scene.h"
-#include "mechanics/load_parameters.h"
 
 namespace datomsim::frontend {
 
@@ -39,7 +39,7 @@ struct RunArguments {
   // Gravity: "off", "on" (0,0,-9.81 m/s^2) or the gravity vector "x,y,z"; with it on, the load
   // model's parameters (docs/mechanics.md, "Gravity in a run").
   std::string gravity = "off";
-  mechanics::LoadParameters loads;
+  elastic::LoadParameters loads;
   // The most modules solved around a change; 0: whole pieces (docs/mechanics.md).
   int loadRegion = kDefaultLoadRegion;
   // Record the trace even with no --trace file (the caller writes it).

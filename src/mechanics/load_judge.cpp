@@ -12,6 +12,9 @@
 
 namespace datomsim::mechanics {
 
+using elastic::LatchLoad;
+using elastic::LoadParameters;
+
 namespace {
 
 bool isReleased(const LoadChange& change, uint32_t index, int connector) {
@@ -30,9 +33,10 @@ LoadRefusal overloadText(const LoadModel& model, const Beam& beam, const LatchLo
   const ModuleId a = model.nodes[beam.a].module;
   const ModuleId b = model.nodes[beam.b].module;
   return {
-      fmt::format("latch {}-{} {} {} (limit {})", std::min(a, b).value, std::max(a, b).value, verb,
-                  quantityText(byMoment ? moment : force, byMoment ? "N m" : "N"),
-                  quantityText(byMoment ? p.latchMoment : p.latchForce, byMoment ? "N m" : "N")),
+      fmt::format(
+          "latch {}-{} {} {} (limit {})", std::min(a, b).value, std::max(a, b).value, verb,
+          elastic::quantityText(byMoment ? moment : force, byMoment ? "N m" : "N"),
+          elastic::quantityText(byMoment ? p.latchMoment : p.latchForce, byMoment ? "N m" : "N")),
       std::min(a, b), std::max(a, b), std::nullopt};
 }
 
@@ -102,7 +106,7 @@ struct HangingLoad {
 HangingLoad hangingLoad(const LoadParameters& parameters, const geometry::Cell& at,
                         const geometry::Cell& pivotAt) {
   const double spacing = 2.0 * parameters.radius;
-  const geometry::Vec3 weight = parameters.gravity * moduleMass(parameters);
+  const geometry::Vec3 weight = parameters.gravity * elastic::moduleMass(parameters);
   const geometry::Vec3 lever =
       geometry::worldPosition(at, spacing) - geometry::worldPosition(pivotAt, spacing);
   return {weight, geometry::cross(lever, weight), geometry::cross(lever * 0.5, weight)};
@@ -144,8 +148,8 @@ std::optional<LoadRefusal> LoadJudge::judgePieces(const world::World& world,
   }
   LoadModel model;
   model.parameters = parameters_;
-  model.section = beamSection(parameters_);
-  model.moduleMass = moduleMass(parameters_);
+  model.section = elastic::beamSection(parameters_);
+  model.moduleMass = elastic::moduleMass(parameters_);
   // Each piece is searched from a seed not yet reached, breadth first: its free modules, then the
   // ground ones it is latched to (held, not searched beyond). Hanging modules are loads, not
   // nodes. Past the region's limit, the modules reached are held where they are: the nearest

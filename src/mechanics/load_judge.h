@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "datomsim/result.h"
+#include "elastic/load_parameters.h"
 #include "geometry/cell.h"
-#include "mechanics/load_parameters.h"
 #include "mechanics/tipping.h"
 #include "world/latch_search.h"
 #include "world/world.h"
@@ -77,20 +77,20 @@ struct JudgeCounts {
 
 // Whether a world's latched ensemble holds itself up at rest: refuses modules that nothing holds,
 // a latch overloaded ("latch 12-37 carries 12.4 mN m (limit 10 mN m)") and tipping.
-Status checkAtRest(const world::World& world, const LoadParameters& parameters);
+Status checkAtRest(const world::World& world, const elastic::LoadParameters& parameters);
 
 class LoadJudge {
  public:
   // The parameters must have passed checkParameters. `region`: the most modules off the ground
   // solved around a change, the nearest first; the modules of its pieces beyond are held where
   // they are (docs/mechanics.md, "Gravity in a run"). 0: whole pieces, exact.
-  explicit LoadJudge(const LoadParameters& parameters, size_t region = 0);
+  explicit LoadJudge(const elastic::LoadParameters& parameters, size_t region = 0);
 
   // The change judged on the world: the first reason to refuse it, or nothing. The world's
   // modules not named by the change keep their cells and latches.
   std::optional<LoadRefusal> judge(const world::World& world, const LoadChange& change);
 
-  const LoadParameters& parameters() const { return parameters_; }
+  const elastic::LoadParameters& parameters() const { return parameters_; }
   const JudgeCounts& counts() const { return counts_; }
 
  private:
@@ -101,7 +101,7 @@ class LoadJudge {
   std::optional<LoadRefusal> judgeTipping(const world::World& world, const LoadChange& change,
                                           const geometry::Cell* moverAt);
 
-  LoadParameters parameters_;
+  elastic::LoadParameters parameters_;
   size_t region_ = 0;
   JudgeCounts counts_;
   // Scratch, by world index, reset by stamping: which search saw a module last, and its node.

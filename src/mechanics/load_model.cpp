@@ -66,13 +66,15 @@ Incidence incidenceOf(const LoadModel& model) {
   return incidence;
 }
 
-Result<LoadModel> buildLoadModel(const world::World& world, const LoadParameters& parameters) {
-  if (Status checked = checkParameters(parameters); !checked) return Error{checked.error()};
+Result<LoadModel> buildLoadModel(const world::World& world,
+                                 const elastic::LoadParameters& parameters) {
+  if (Status checked = elastic::checkParameters(parameters); !checked)
+    return Error{checked.error()};
   if (world.size() == 0) return Error{"the scene has no modules: there is nothing to load"};
   LoadModel model;
   model.parameters = parameters;
-  model.section = beamSection(parameters);
-  model.moduleMass = moduleMass(parameters);
+  model.section = elastic::beamSection(parameters);
+  model.moduleMass = elastic::moduleMass(parameters);
   const double spacing = 2.0 * parameters.radius;
   const std::span<const world::Module> modules = world.modules();
   model.nodes.reserve(modules.size());

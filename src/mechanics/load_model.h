@@ -12,9 +12,9 @@
 
 #include "datomsim/result.h"
 #include "datomsim/values.h"
+#include "elastic/load_parameters.h"
 #include "geometry/cell.h"
 #include "geometry/vec3.h"
-#include "mechanics/load_parameters.h"
 #include "world/world.h"
 
 namespace datomsim::mechanics {
@@ -37,8 +37,8 @@ struct Beam {
 };
 
 struct LoadModel {
-  LoadParameters parameters;
-  BeamSection section;
+  elastic::LoadParameters parameters;
+  elastic::BeamSection section;
   double moduleMass = 0;  // kg, each module
   std::vector<Node> nodes;
   std::vector<Beam> beams;
@@ -54,6 +54,7 @@ Incidence incidenceOf(const LoadModel& model);
 // Builds the model of a world's latched modules. Refuses bad parameters (checkParameters), an
 // empty world, a world none of whose modules is on the ground ("the ensemble touches no ground:
 // nothing holds it"), and modules that no chain of latches ties to a supported one, naming one.
-Result<LoadModel> buildLoadModel(const world::World& world, const LoadParameters& parameters);
+Result<LoadModel> buildLoadModel(const world::World& world,
+                                 const elastic::LoadParameters& parameters);
 
 }  // namespace datomsim::mechanics

@@ -34,11 +34,12 @@ std::array<geometry::Vec3, geometry::kDirectionCount> directionAxes() {
 }
 
 // The beams' stiffness by direction: all beams are alike but for their axis.
-std::array<BeamMatrix, geometry::kDirectionCount> stiffnessByDirection(const LoadModel& model) {
+std::array<elastic::BeamMatrix, geometry::kDirectionCount> stiffnessByDirection(
+    const LoadModel& model) {
   const auto axes = directionAxes();
-  std::array<BeamMatrix, geometry::kDirectionCount> matrices;
+  std::array<elastic::BeamMatrix, geometry::kDirectionCount> matrices;
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
-    matrices[d] = beamStiffness(model.section, model.parameters.youngModulus, axes[d]);
+    matrices[d] = elastic::beamStiffness(model.section, model.parameters.youngModulus, axes[d]);
   }
   return matrices;
 }
@@ -53,7 +54,7 @@ struct Assembly {
 // K's lower triangle column by column, each column's rows in increasing order, so that every
 // entry is appended to room reserved for it: the diagonal block of the node, then the blocks of
 // its free neighbours numbered after it.
-Assembly assemble(const LoadModel& model, const std::array<BeamMatrix, 12>& stiffness) {
+Assembly assemble(const LoadModel& model, const std::array<elastic::BeamMatrix, 12>& stiffness) {
   Assembly out;
   const size_t count = model.nodes.size();
   out.firstDof.assign(count, kHeld);
@@ -129,7 +130,7 @@ namespace {
 
 // Each node's motion, zero at the supports, and each latch's load from its ends' motions.
 void readSolution(const LoadModel& model, const Assembly& assembly,
-                  const std::array<BeamMatrix, geometry::kDirectionCount>& stiffness,
+                  const std::array<elastic::BeamMatrix, geometry::kDirectionCount>& stiffness,
                   const Eigen::VectorXd& u, LoadSolution& solution) {
   const size_t count = model.nodes.size();
   solution.displacement.assign(count, {});
@@ -143,13 +144,14 @@ void readSolution(const LoadModel& model, const Assembly& assembly,
   const auto axes = directionAxes();
   solution.latches.reserve(model.beams.size());
   for (const Beam& beam : model.beams) {
-    BeamVector ends = BeamVector::Zero();
+    elastic::BeamVector ends = elastic::BeamVector::Zero();
     for (const auto& [node, at] : {std::pair{beam.a, 0}, std::pair{beam.b, kDofs}}) {
       const int32_t first = assembly.firstDof[node];
       if (first != kHeld) ends.segment<kDofs>(at) = u.segment<kDofs>(first);
     }
-    solution.latches.push_back(latchLoad(stiffness[beam.direction], ends, axes[beam.direction],
-                                         model.section.length, model.parameters));
+    solution.latches.push_back(elastic::latchLoad(stiffness[beam.direction], ends,
+                                                  axes[beam.direction], model.section.length,
+                                                  model.parameters));
   }
 }
 

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "datomsim/result.h"
+#include "elastic/beam_element.h"
 #include "geometry/vec3.h"
-#include "mechanics/beam_element.h"
 #include "mechanics/load_model.h"
 
 namespace datomsim::mechanics {
@@ -37,7 +37,7 @@ struct LoadSolution {
   std::vector<geometry::Vec3> displacement;
   std::vector<geometry::Vec3> rotation;
   // Per beam (model.beams' order).
-  std::vector<LatchLoad> latches;
+  std::vector<elastic::LatchLoad> latches;
   double totalWeight = 0;  // N, every module's
   // How it was solved: "sparse LDLT" or "conjugate gradient", the iterations the latter took and
   // the relative residual |K u - f| / |f| it reached.

@@ -32,9 +32,9 @@
 #include "catom3d/rolling.h"
 #include "datomsim/move_result.h"
 #include "datomsim/result.h"
+#include "elastic/load_parameters.h"
 #include "geometry/orientation.h"
 #include "mechanics/load_judge.h"
-#include "mechanics/load_parameters.h"
 #include "motion/motion.h"
 #include "motion/motion_model.h"
 #include "motion/rule_table.h"
@@ -82,7 +82,7 @@ struct MotionLimits {
   catom3d::RollRules rolling = catom3d::RollRules::kSymmetric;
   // Gravity on: the load model's parameters; a motion that would overload a latch or tip the
   // ensemble is refused (mechanics/load_judge.h).
-  std::optional<mechanics::LoadParameters> gravity = std::nullopt;
+  std::optional<elastic::LoadParameters> gravity = std::nullopt;
   // The most modules solved around a change (mechanics::LoadJudge); 0: whole pieces.
   size_t loadRegion = 0;
 };

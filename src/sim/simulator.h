@@ -58,10 +58,10 @@ struct SimulationOptions {
   int maxMotions = 0;
   // Refuse a motion or deformation that would cut modules off from their piece of the ensemble.
   bool connectivity = false;
-  // Gravity on: the load model's parameters (mechanics/load_parameters.h, checked by the caller).
+  // Gravity on: the load model's parameters (elastic/load_parameters.h, checked by the caller).
   // A motion or a compression that would overload a latch or tip the ensemble is refused
   // (mechanics/load_judge.h); the scene itself is the caller's to check before the run.
-  std::optional<mechanics::LoadParameters> gravity;
+  std::optional<elastic::LoadParameters> gravity;
   // The most modules solved around a change, the nearest first, the rest of their piece held
   // (an approximation, docs/mechanics.md); 0: whole pieces, exact.
   size_t loadRegion = 0;

@@ -1,9 +1,11 @@
 // `datomsim loads` as a user runs it: its summary, JSON and pictures, and its refusals (bad
-// parameters and options, a scene nothing holds), which leave no output behind.
+// parameters and options, a scene nothing holds), which leave no output behind; and the modules'
+// own solver, `run --program loads`, giving the same.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -78,6 +80,55 @@ TEST_F(LoadsCommand, RefusesASceneThatTouchesNoGround) {
     {"id":1,"cell":[0,0,2]},{"id":2,"cell":[1,0,2]}]})";
   refused("loads " + path("floating.json") + outputs(),
           "the ensemble touches no ground: nothing holds it");
+}
+
+// The module program `loads` solves the command's model by itself: with the same (weak) latches,
+// every module's smallest safety factor is the command's, within the agreement docs/mechanics.md
+// states, and the same latches are overloaded.
+TEST_F(LoadsCommand, TheModulesOwnSolverGivesTheCommandsSafetyFactors) {
+  const std::string weak = " --latch-moment 2e-5 --latch-force 0.05";
+  ASSERT_EQ(datomsim("loads " + arch(2) + weak + " --out " + path("loads.json")).status, 0);
+  const Outcome run =
+      datomsim("run " + arch(2) + " --program loads --root 6,5,0 --param " +
+               "latch-moment=2e-5 --param latch-force=0.05 --out " + path("distributed.json"));
+  ASSERT_EQ(run.status, 0) << run.output;
+  const auto scene = nlohmann::json::parse(readText(arch(2)));
+  const auto centralised = nlohmann::json::parse(readText(path("loads.json")));
+  const auto distributed = nlohmann::json::parse(readText(path("distributed.json")));
+  std::map<int, nlohmann::json> cellOf;
+  for (const auto& module : scene["modules"]) cellOf[module["id"].get<int>()] = module["cell"];
+  std::map<nlohmann::json, double> expected;
+  for (const auto& latch : centralised["loads"]) {
+    if (latch["safety"].is_null()) continue;
+    for (const char* end : {"a", "b"}) {
+      const nlohmann::json& cell = cellOf.at(latch[end].get<int>());
+      const double safety = latch["safety"].get<double>();
+      expected[cell] = expected.count(cell) ? std::min(expected[cell], safety) : safety;
+    }
+  }
+  EXPECT_EQ(distributed["converged"][0][3], 1);
+  ASSERT_EQ(distributed["safety"].size(), expected.size());
+  int overloaded = 0, overloadedExpected = 0;
+  for (const auto& [cell, safety] : expected) overloadedExpected += safety < 1 ? 1 : 0;
+  for (const auto& entry : distributed["safety"]) {
+    const nlohmann::json cell = {entry[0], entry[1], entry[2]};
+    const double want = expected.at(cell);
+    EXPECT_NEAR(entry[3].get<double>(), want, 1e-8 * want) << cell;
+    overloaded += entry[3].get<double>() < 1 ? 1 : 0;
+  }
+  // The four overloaded latches of docs/mechanics.md ("The paper's arch"), seen from their ends.
+  EXPECT_GE(overloadedExpected, 4);
+  EXPECT_EQ(overloaded, overloadedExpected);
+}
+
+TEST_F(LoadsCommand, TheModulesOwnSolverRefusesBadParametersByName) {
+  const Outcome outcome = datomsim("run " + arch(2) + " --program loads --root 6,5,0 --param " +
+                                   "young-modulus=0 --out " + path("distributed.json"));
+  EXPECT_EQ(outcome.status, 1) << outcome.output;
+  EXPECT_NE(outcome.output.find("Young's modulus must be a positive number (Pa), not 0"),
+            std::string::npos)
+      << outcome.output;
+  EXPECT_FALSE(std::filesystem::exists(path("distributed.json")));
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 namespace datomsim::mechanics {
 namespace {
 
+using elastic::LoadParameters;
 using testing::WorldBuilder;
 
 uint32_t indexOf(const world::World& world, const geometry::Cell& cell) {

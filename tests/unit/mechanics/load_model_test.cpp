@@ -13,7 +13,7 @@
 #include <string>
 #include <utility>
 
-#include "mechanics/beam_element.h"
+#include "elastic/beam_element.h"
 #include "mechanics/load_solver.h"
 #include "mechanics/tipping.h"
 #include "scene/paper_arch.h"
@@ -21,6 +21,14 @@
 
 namespace datomsim::mechanics {
 namespace {
+
+using elastic::BeamMatrix;
+using elastic::BeamSection;
+using elastic::beamSection;
+using elastic::beamStiffness;
+using elastic::BeamVector;
+using elastic::LatchLoad;
+using elastic::LoadParameters;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 

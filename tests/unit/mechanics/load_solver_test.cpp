@@ -13,6 +13,9 @@
 namespace datomsim::mechanics {
 namespace {
 
+using elastic::LatchLoad;
+using elastic::LoadParameters;
+
 using testing::beamBetween;
 using testing::nodeOf;
 

@@ -1,9 +1,9 @@
-#include "mechanics/beam_element.h"
+#include "elastic/beam_element.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
 
-namespace datomsim::mechanics {
+namespace datomsim::elastic {
 
 namespace {
 
@@ -90,4 +90,4 @@ LatchLoad latchLoad(const BeamMatrix& stiffness, const BeamVector& ends, const g
   return load;
 }
 
-}  // namespace datomsim::mechanics
+}  // namespace datomsim::elastic

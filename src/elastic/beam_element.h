@@ -4,14 +4,17 @@
 // Degrees of freedom, in world axes: (u_a, theta_a, u_b, theta_b), displacements in m and
 // rotations in rad. The section is a square, the same about both axes across the beam, so the
 // stiffness depends only on the beam's axis, not on how its cross-section is turned.
+//
+// The centralised solver (mechanics/load_solver.h) assembles it for every latch; a module of the
+// distributed solver (algorithms/loads.h) builds its own latches' from what it knows.
 #pragma once
 
 #include <Eigen/Core>
 
+#include "elastic/load_parameters.h"
 #include "geometry/vec3.h"
-#include "mechanics/load_parameters.h"
 
-namespace datomsim::mechanics {
+namespace datomsim::elastic {
 
 using BeamMatrix = Eigen::Matrix<double, 12, 12>;
 using BeamVector = Eigen::Matrix<double, 12, 1>;
@@ -38,4 +41,4 @@ struct LatchLoad {
 LatchLoad latchLoad(const BeamMatrix& stiffness, const BeamVector& ends, const geometry::Vec3& axis,
                     double length, const LoadParameters& parameters);
 
-}  // namespace datomsim::mechanics
+}  // namespace datomsim::elastic

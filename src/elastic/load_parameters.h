@@ -11,7 +11,7 @@
 #include "datomsim/result.h"
 #include "geometry/vec3.h"
 
-namespace datomsim::mechanics {
+namespace datomsim::elastic {
 
 struct LoadParameters {
   // r: half the distance between opposite connectors, m. The lattice spacing is 2r.
@@ -60,4 +60,4 @@ std::string quantityText(double value, const char* unit);
 // The section of the latch's beam; the parameters must have passed checkParameters.
 BeamSection beamSection(const LoadParameters& parameters);
 
-}  // namespace datomsim::mechanics
+}  // namespace datomsim::elastic

@@ -1,4 +1,4 @@
-#include "mechanics/load_parameters.h"
+#include "elastic/load_parameters.h"
 
 #include <cmath>
 #include <string>
@@ -8,7 +8,7 @@
 
 #include "datom/dimensions.h"
 
-namespace datomsim::mechanics {
+namespace datomsim::elastic {
 
 namespace {
 
@@ -75,4 +75,4 @@ BeamSection beamSection(const LoadParameters& p) {
   return section;
 }
 
-}  // namespace datomsim::mechanics
+}  // namespace datomsim::elastic

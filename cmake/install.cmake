@@ -21,6 +21,13 @@ install(
   FILES ${PROJECT_BINARY_DIR}/bin/viewer.bundle.js
   DESTINATION ${CMAKE_INSTALL_DATADIR}/datomsim
   OPTIONAL)
+# The actuator designs (docs/actuators.md) beside the viewer's script, in
+# PREFIX/share/datomsim/actuators.
+install(
+  DIRECTORY ${PROJECT_SOURCE_DIR}/data/actuators
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/datomsim
+  FILES_MATCHING
+  PATTERN "*.json")
 install(
   EXPORT datomsimTargets
   NAMESPACE datomsim::

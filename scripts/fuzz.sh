@@ -10,7 +10,8 @@ cd "$(dirname "$0")/.."
 seconds="${1:-30}"
 shift || true
 fuzzers=("$@")
-((${#fuzzers[@]} > 0)) || fuzzers=(json_scene_fuzzer xml_scene_fuzzer trace_fuzzer arguments_fuzzer)
+((${#fuzzers[@]} > 0)) ||
+  fuzzers=(json_scene_fuzzer xml_scene_fuzzer trace_fuzzer arguments_fuzzer actuator_design_fuzzer)
 
 mkdir -p build
 log=build/fuzz.log

@@ -1,0 +1,75 @@
+// `datomsim actuators show` as a user runs it: a combination's figures at a size, as text and
+// JSON, the designs found beside the binary, and its refusals.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "command_line.h"
+
+namespace datomsim {
+namespace {
+
+class ActuatorsCommand : public CommandLine {
+ protected:
+  void refused(const std::string& arguments, const std::string& message) {
+    const Outcome outcome = datomsim(arguments);
+    EXPECT_EQ(outcome.status, 1) << arguments << "\n" << outcome.output;
+    EXPECT_NE(outcome.output.find(message), std::string::npos)
+        << arguments << "\nexpected: " << message << "\ngot: " << outcome.output;
+  }
+};
+
+TEST_F(ActuatorsCommand, ShowsACombinationAtOneCentimetre) {
+  const Outcome outcome = datomsim("actuators show sma-spring+electrostatic --size 1cm");
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  for (const char* line : {"module (r = 0.01 m, t = 0.001 m)", "sma-spring (deformation)",
+                           "electrostatic-latch (latch)", "heating time", "1.027 s",
+                           "holding force", "0.4123 N", "8.246e-06 J"}) {
+    EXPECT_NE(outcome.output.find(line), std::string::npos) << line << "\n" << outcome.output;
+  }
+}
+
+TEST_F(ActuatorsCommand, PrintsJsonWithEveryValueAndItsUnit) {
+  const Outcome outcome = datomsim("actuators show electro-ribbon --size 1mm --json");
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const auto json = nlohmann::json::parse(outcome.output);
+  EXPECT_DOUBLE_EQ(json["radius"].get<double>(), 0.001);
+  EXPECT_DOUBLE_EQ(json["thickness"].get<double>(), 0.0001);
+  ASSERT_EQ(json["designs"].size(), 1u);
+  const auto& ribbon = json["designs"][0];
+  EXPECT_EQ(ribbon["name"], "electro-ribbon");
+  EXPECT_EQ(ribbon["kind"], "deformation");
+  // The voltage a ribbon needs at 1 mm, sqrt(2 d F / (e0 er w)): 175 V.
+  EXPECT_NEAR(ribbon["quantities"]["voltage needed"]["value"].get<double>(), 175.4, 0.05);
+  EXPECT_EQ(ribbon["quantities"]["voltage needed"]["unit"], "V");
+}
+
+TEST_F(ActuatorsCommand, ReadsTheDesignsOfAFolderGiven) {
+  const std::string designs = std::string(DATOMSIM_SOURCE_DIR) + "/data/actuators";
+  const Outcome outcome =
+      datomsim("actuators show mechanical --size 10cm --json --designs " + designs);
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const auto json = nlohmann::json::parse(outcome.output);
+  EXPECT_NEAR(json["designs"][0]["quantities"]["holding force"]["value"].get<double>(), 7710.0,
+              0.5);
+}
+
+TEST_F(ActuatorsCommand, RefusesUnknownDesignsSizesAndFolders) {
+  refused("actuators show sma-sprng+electrostatic",
+          "unknown actuator design \"sma-sprng\": did you mean \"sma-spring\"?");
+  refused("actuators show sma-spring+electro-ribbon", "are both deformation designs");
+  refused("actuators show sma-spring --size 1km",
+          "--size 1km: expected a positive length with its unit");
+  refused("actuators show sma-spring --size -1cm",
+          "--size -1cm: expected a positive length with its unit");
+  refused("actuators show sma-spring --size 1cm --thickness 0.005",
+          "thickness 0.005 must be less than t_max");
+  refused("actuators show sma-spring --designs " + path("none"),
+          "none/sma-spring.json: no such file or not readable");
+  refused("actuators", "A subcommand is required");
+}
+
+}  // namespace
+}  // namespace datomsim

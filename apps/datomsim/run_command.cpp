@@ -143,17 +143,11 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
     if (!args->trace.empty()) outputs.push_back({"--trace", args->trace});
     refuseClashes({{"scene", args->scene}, {"--target", args->target}}, outputs);
     args->connectivityGiven = command->count("--connectivity") > 0;
-    if (args->gravity == "off") {
-      if (command->count("--load-region") > 0) {
-        throw UsageError("--load-region is how the loads are solved: it needs --gravity on");
-      }
-      for (const char* option : kLoadParameterOptions) {
-        if (command->count(option) > 0) {
-          throw UsageError(
-              fmt::format("{} is a parameter of the load model: it needs --gravity on", option));
-        }
-      }
+    // Refused with gravity off by runOnScene, as Python's keywords are.
+    for (const char* option : kLoadParameterOptions) {
+      if (command->count(option) > 0) args->loadOptionsGiven.emplace_back(option);
     }
+    if (command->count("--load-region") > 0) args->loadOptionsGiven.emplace_back("--load-region");
     io::Scene scene = unwrap(io::readScene(args->scene));
     // Each kind's own options, as reach refuses them (--connectivity serves both in a run).
     refuseOtherKindsOptions(*command, kindFor(args->module, scene), {"--rules", "--attachment"});

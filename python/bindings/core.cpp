@@ -118,19 +118,23 @@ double numberArgument(const py::handle& value, const std::string& name) {
   return value.cast<double>();
 }
 
+// The load model's parameters by their keywords, as `loads` and `run` take them.
+std::vector<std::pair<std::string, double*>> loadParameterKeywords(elastic::LoadParameters& p) {
+  return {{"radius", &p.radius},
+          {"thickness", &p.thickness},
+          {"density", &p.density},
+          {"solid_fraction", &p.solidFraction},
+          {"young_modulus", &p.youngModulus},
+          {"poisson_ratio", &p.poissonRatio},
+          {"latch_force", &p.latchForce},
+          {"latch_moment", &p.latchMoment}};
+}
+
 // The JSON text of `loads --out`; the pictures asked for written as the command writes them.
 std::string loads(const Scene& scene, const py::dict& options) {
   frontend::LoadsArguments args;
   elastic::LoadParameters& p = args.parameters;
-  const std::vector<std::pair<std::string, double*>> numbers = {
-      {"radius", &p.radius},
-      {"thickness", &p.thickness},
-      {"density", &p.density},
-      {"solid_fraction", &p.solidFraction},
-      {"young_modulus", &p.youngModulus},
-      {"poisson_ratio", &p.poissonRatio},
-      {"latch_force", &p.latchForce},
-      {"latch_moment", &p.latchMoment}};
+  const std::vector<std::pair<std::string, double*>> numbers = loadParameterKeywords(p);
   std::string solver = "auto";
   // The pictures' title names the scene: the command line gives its path.
   std::string title = scene.scene().name.value_or("scene");
@@ -198,20 +202,60 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
   frontend::RunArguments args;
   args.program = program;
   const std::set<std::string> known = {
-      "goal",     "start",     "rules",       "attachment", "connectivity", "seed",
-      "delay_ms", "jitter_ms", "max_motions", "target",     "timeout",      "until",
-      "params",   "root",      "trace",       "scene_name", "module",       "rolling"};
+      "goal",      "start",       "rules",  "attachment", "connectivity", "seed",       "delay_ms",
+      "jitter_ms", "max_motions", "target", "timeout",    "until",        "params",     "root",
+      "trace",     "scene_name",  "module", "rolling",    "gravity",      "load_region"};
+  const std::vector<std::pair<std::string, double*>> loadNumbers =
+      loadParameterKeywords(args.loads);
   for (const auto& [key, value] : options) {
     const std::string name = key.cast<std::string>();
-    if (!known.contains(name)) {
+    const auto loadNumber = std::find_if(loadNumbers.begin(), loadNumbers.end(),
+                                         [&](const auto& entry) { return entry.first == name; });
+    if (!known.contains(name) && loadNumber == loadNumbers.end()) {
       throw UsageError(
           fmt::format("run: unknown option {} (known: goal, start, rules, "
                       "attachment, connectivity, seed, delay_ms, jitter_ms, "
                       "max_motions, target, timeout, until, params, root, trace, module, "
-                      "rolling)",
+                      "rolling, gravity, load_region, radius, thickness, density, "
+                      "solid_fraction, young_modulus, poisson_ratio, latch_force, latch_moment)",
                       name));
     }
     if (value.is_none()) continue;
+    // The load model's, named as the command line's options for the shared refusals.
+    if (loadNumber != loadNumbers.end()) {
+      *loadNumber->second = numberArgument(value, name);
+      std::string option = "--" + name;
+      std::replace(option.begin(), option.end(), '_', '-');
+      args.loadOptionsGiven.push_back(option);
+      continue;
+    }
+    if (name == "gravity") {
+      // True or "on", False or "off", or three numbers.
+      if (py::isinstance<py::bool_>(value)) {
+        args.gravity = value.cast<bool>() ? "on" : "off";
+      } else if (py::isinstance<py::str>(value)) {
+        args.gravity = value.cast<std::string>();
+      } else {
+        const auto parts = value.cast<py::sequence>();
+        if (parts.size() != 3) {
+          throw py::type_error(
+              "run(): gravity must be True, False, \"on\", \"off\" or three "
+              "numbers (x, y, z), m/s^2");
+        }
+        args.gravity =
+            fmt::format("{},{},{}", numberArgument(parts[0], "gravity"),
+                        numberArgument(parts[1], "gravity"), numberArgument(parts[2], "gravity"));
+      }
+      continue;
+    }
+    if (name == "load_region") {
+      if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
+        throw py::type_error("run(): load_region must be an integer");
+      }
+      args.loadRegion = value.cast<int>();
+      args.loadOptionsGiven.push_back("--load-region");
+      continue;
+    }
     const auto cellText = [&](const char* option) {
       const Cell cell = cellArgument(value, option);
       return fmt::format("{},{},{}", cell.x, cell.y, cell.z);

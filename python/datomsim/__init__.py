@@ -195,8 +195,10 @@ def run(
 
     Options are the command line's, with underscores: ``goal``, ``start``, ``seed``, ``rules``,
     ``attachment``, ``connectivity``, ``delay_ms``, ``jitter_ms``, ``max_motions``, ``target``
-    (a scene file), ``timeout``, ``until`` (seconds), ``root`` (flood); ``params`` are the
-    program's parameters. ``trace`` is a file to write the trace to (its path is then in the
+    (a scene file), ``timeout``, ``until`` (seconds), ``root`` (flood), ``gravity`` (True,
+    "on" or three numbers: motions weighed under the load model, docs/mechanics.md),
+    ``load_region`` and the load model's parameters as :func:`loads` takes them
+    (``latch_force``, ``density``...); ``params`` are the program's parameters. ``trace`` is a file to write the trace to (its path is then in the
     result under "trace"), or True to have the trace's text there.
 
     A run that fails (the mobile does not arrive, the target is not built) is a result with its

@@ -166,6 +166,35 @@ def test_loads_give_what_loads_out_writes(scenes, cli, tmp_path):
         datomsim.loads(scene, gravity=(0, -9.81))
 
 
+def test_run_with_gravity_refuses_what_the_command_line_refuses(scenes, cli):
+    path = scenes / "paper-arch-hole2.json"
+    scene = datomsim.load_scene(path)
+    keywords = dict(goal=(6, 5, 2), start=(0, 0, 2))
+    arguments = ["--goal", "6,5,2", "--start", "0,0,2"]
+    # A motion refused under gravity: the same failure, the same figures.
+    ours = datomsim.run(scene, "follow-gradient", gravity=True, latch_force=0.03, **keywords)
+    written = cli("run", path, "--program", "follow-gradient", *arguments, "--gravity", "on",
+                  "--latch-force", "0.03", "--out", "-")
+    assert written.returncode == 1
+    assert ours == json.loads(written.stdout)
+    assert "latch 49-97 would carry 30.1 mN (limit 30 mN)" in ours["reason"]
+    assert ours["gravity"]["refused"] == 1
+    for python, command in [
+        (dict(gravity="on", latch_force=0.02), ["--gravity", "on", "--latch-force", "0.02"]),
+        (dict(latch_moment=0.5), ["--latch-moment", "0.5"]),
+        (dict(gravity=(0, 0, 0)), ["--gravity", "0,0,0"]),
+        (dict(gravity="sideways"), ["--gravity", "sideways"]),
+        (dict(gravity=True, load_region=-1), ["--gravity", "on", "--load-region", "-1"]),
+    ]:
+        with pytest.raises(datomsim.Error) as raised:
+            datomsim.run(scene, "follow-gradient", **python, **keywords)
+        said = cli("run", path, "--program", "follow-gradient", *arguments, *command)
+        assert said.returncode == 1
+        assert said.stderr.strip() == f"datomsim: error: {raised.value}", python
+    with pytest.raises(TypeError, match="load_region must be an integer"):
+        datomsim.run(scene, "follow-gradient", gravity=True, load_region=2.5, **keywords)
+
+
 def test_mistakes_raise_the_command_lines_message(scenes, cli):
     path = scenes / "paper-arch-hole1.json"
     scene = datomsim.load_scene(path)

@@ -17,7 +17,13 @@ namespace {
 
 // The load model's parameters of a run with gravity on, checked; nothing with it off.
 std::optional<elastic::LoadParameters> gravityOf(const RunArguments& args, world::ModuleKind kind) {
-  if (args.gravity == "off") return std::nullopt;
+  if (args.gravity == "off") {
+    if (!args.loadOptionsGiven.empty()) {
+      throw UsageError(fmt::format("{} is a parameter of the load model: it needs --gravity on",
+                                   args.loadOptionsGiven.front()));
+    }
+    return std::nullopt;
+  }
   if (kind != world::ModuleKind::kDatom) {
     throw UsageError(
         "--gravity: the load model is the Datom's (docs/mechanics.md); 3D Catoms "

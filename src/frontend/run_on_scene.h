@@ -42,6 +42,9 @@ struct RunArguments {
   elastic::LoadParameters loads;
   // The most modules solved around a change; 0: whole pieces (docs/mechanics.md).
   int loadRegion = kDefaultLoadRegion;
+  // The options of the load model given ("--latch-force", "--load-region"...): refused with
+  // gravity off.
+  std::vector<std::string> loadOptionsGiven;
   // Record the trace even with no --trace file (the caller writes it).
   bool wantTrace = false;
 };

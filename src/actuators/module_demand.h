@@ -4,14 +4,15 @@
 #pragma once
 
 #include "datom/dimensions.h"
+#include "elastic/load_parameters.h"
 
 namespace datomsim::actuators {
 
 struct ModuleBody {
-  // kg/m^3 and the share of the cell that is material: the defaults of docs/mechanics.md (PLA, a
-  // hollow module), so that the two pages weigh the same module.
-  double density = 1240.0;
-  double solidFraction = 0.25;
+  // kg/m^3 and the share of the cell that is material: the load model's (docs/mechanics.md: PLA,
+  // a hollow module), so that the two pages weigh the same module.
+  double density = elastic::LoadParameters{}.density;
+  double solidFraction = elastic::LoadParameters{}.solidFraction;
   // m/s^2, standard gravity.
   double gravity = 9.81;
   // Module weights a piston lifts in a motion (assumption: the mobile's own weight) and the

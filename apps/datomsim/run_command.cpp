@@ -85,12 +85,10 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
   command->add_option("--seed", args->seed, "Seed of the modules' random streams and delays")
       ->capture_default_str();
   command->add_option("--delay-ms", args->delayMs, "Message delay in milliseconds")
-      ->check(kNonNegative)
       ->capture_default_str();
   command
       ->add_option("--jitter-ms", args->jitterMs,
                    "Extra random message delay, uniform in [0, jitter], in milliseconds")
-      ->check(kNonNegative)
       ->capture_default_str();
   command
       ->add_option("--max-motions", args->maxMotions,
@@ -100,11 +98,10 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
   command->add_option("--target", args->target,
                       "Take the target from this scene file (its modules are ignored) instead of "
                       "the scene's own (reconfigure)");
-  command
-      ->add_option("--timeout", args->timeoutS,
-                   "Simulated seconds after which a reconfiguration stops (default: 3600 + 10 per "
-                   "module, times the movers per --max-motions slot)")
-      ->check(kPositive);
+  command->add_option(
+      "--timeout", args->timeoutS,
+      "Simulated seconds after which a reconfiguration stops (default: 3600 + 10 per "
+      "module, times the movers per --max-motions slot; at most 1e9)");
   command
       ->add_option("--param", args->parameters,
                    "A program parameter KEY=VALUE (repeatable; over the scene's \"parameters\"); "
@@ -112,11 +109,9 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
       ->allow_extra_args(false);
   command->add_option("--root", args->root,
                       "flood, loads: the root cell x,y,z (as --param root=X,Y,Z)");
-  command
-      ->add_option("--until", args->untilS,
-                   "Stop at this simulated time in seconds, for programs that never fall quiet "
-                   "(default: when no event remains)")
-      ->check(kPositive);
+  command->add_option("--until", args->untilS,
+                      "Stop at this simulated time in seconds, for programs that never fall quiet "
+                      "(default: when no event remains; at most 1e9)");
   command
       ->add_option("--gravity", args->gravity,
                    "off, on (0,0,-9.81), or the gravity vector x,y,z in m/s^2: with gravity, a "

@@ -219,6 +219,39 @@ def test_mistakes_raise_the_command_lines_message(scenes, cli):
         datomsim.run(scene, "gradient", goal=(6, 5, 2), colour="red")
 
 
+@pytest.mark.parametrize("keyword, value, option, text", [
+    ("until", 1e13, "--until", "1e13"),
+    ("until", float("nan"), "--until", "nan"),
+    ("until", -1.0, "--until", "-1"),
+    ("until", 0.0, "--until", "0"),
+    ("delay_ms", 1e16, "--delay-ms", "1e16"),
+    ("delay_ms", float("-inf"), "--delay-ms", "-inf"),
+    ("jitter_ms", 1e16, "--jitter-ms", "1e16"),
+    ("jitter_ms", -0.5, "--jitter-ms", "-0.5"),
+])
+def test_times_are_refused_as_the_command_line_refuses_them(scenes, cli, keyword, value, option,
+                                                            text):
+    path = scenes / "paper-arch-hole1.json"
+    scene = datomsim.load_scene(path)
+    with pytest.raises(datomsim.Error) as raised:
+        datomsim.run(scene, "flood", root=(6, 5, 2), **{keyword: value})
+    said = cli("run", path, "--program", "flood", "--root", "6,5,2", option, text)
+    assert said.returncode == 1
+    assert said.stderr.strip() == f"datomsim: error: {raised.value}"
+    assert option in str(raised.value)
+
+
+@pytest.mark.parametrize("value, text", [(1e13, "1e13"), (float("nan"), "nan"), (-5.0, "-5")])
+def test_a_timeout_is_refused_as_the_command_line_refuses_it(scenes, cli, value, text):
+    path = scenes / "reshape-line.json"
+    with pytest.raises(datomsim.Error) as raised:
+        datomsim.run(datomsim.load_scene(path), "reconfigure", timeout=value)
+    said = cli("run", path, "--program", "reconfigure", "--timeout", text)
+    assert said.returncode == 1
+    assert said.stderr.strip() == f"datomsim: error: {raised.value}"
+    assert str(raised.value).startswith("--timeout ")
+
+
 def test_geometry_is_the_papers(cli):
     ours = datomsim.geometry(radius=1.0, thickness=0.1, fraction=0.5)
     written = cli("geometry", "--radius", "1", "--thickness", "0.1", "--fraction", "0.5", "--json")

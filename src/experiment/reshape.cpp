@@ -50,7 +50,11 @@ ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int
       maxMotions > 0 ? std::max<Time>(1, (Time(movers) + maxMotions - 1) / maxMotions) : 1;
   limits.stall *= share;
   if (limits.timeout == 0) {
-    limits.timeout = (3600 + 10 * Time(modules)) * kSecond * share;
+    // Held at the latest time a run may be asked to reach, as --timeout is (docs/limits.md).
+    Time timeout = 0;
+    const bool over =
+        __builtin_mul_overflow((3600 + 10 * Time(modules)) * kSecond, share, &timeout);
+    limits.timeout = over ? kLatestTime : std::min(timeout, kLatestTime);
   }
   return limits;
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <charconv>
+#include <cmath>
 #include <optional>
 
 #include "catom3d/catom_rolls.h"
@@ -20,6 +21,31 @@ uint64_t parseSeed(const std::string& option, const std::string& text) {
         fmt::format("{} \"{}\" must be an integer from 0 to {}", option, text, UINT64_MAX));
   }
   return value;
+}
+
+Time parseSeconds(const std::string& option, double seconds) {
+  if (!std::isfinite(seconds) || seconds <= 0) {
+    throw UsageError(fmt::format("{} {}: a finite number of seconds, above 0", option, seconds));
+  }
+  static_assert(kLatestTime == 1000000000 * kSecond, "the message names the bound");
+  if (seconds > double(kLatestTime / kSecond)) {
+    throw UsageError(fmt::format("{} {}: at most 1e9 seconds, about 31 years (docs/limits.md)",
+                                 option, seconds));
+  }
+  return Time(seconds * kSecond);
+}
+
+Time parseMilliseconds(const std::string& option, double milliseconds) {
+  if (!std::isfinite(milliseconds) || milliseconds < 0) {
+    throw UsageError(
+        fmt::format("{} {}: a finite number of milliseconds, 0 or more", option, milliseconds));
+  }
+  static_assert(kLongestDelay == 1000000000 * kMillisecond, "the message names the bound");
+  if (milliseconds > double(kLongestDelay / kMillisecond)) {
+    throw UsageError(fmt::format(
+        "{} {}: at most 1e9 milliseconds, about 11.6 days (docs/limits.md)", option, milliseconds));
+  }
+  return Time(milliseconds * kMillisecond);
 }
 
 geometry::Cell parseCell(const std::string& option, const std::string& text) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "catom3d/rolling.h"
+#include "datomsim/time.h"
 #include "geometry/cell.h"
 #include "motion/motion.h"
 #include "motion/motion_model.h"
@@ -20,6 +21,15 @@ geometry::Cell parseCell(const std::string& option, const std::string& text);
 
 // A seed: an integer 0 .. 18446744073709551615, refused rather than saturated beyond.
 uint64_t parseSeed(const std::string& option, const std::string& text);
+
+// A time option in seconds (`--until`, `--timeout`) as a Time: a finite number above 0 and at
+// most kLatestTime (10^9 s); throws UsageError naming the option and the value. Every command
+// and Python's keywords go through it, so that no time wraps past the largest Time.
+Time parseSeconds(const std::string& option, double seconds);
+
+// A delay option in milliseconds (`--delay-ms`, `--jitter-ms`) as a Time: a finite number, 0 or
+// more, at most kLongestDelay (10^9 ms); throws UsageError naming the option and the value.
+Time parseMilliseconds(const std::string& option, double milliseconds);
 
 // "paper" | "strict", and "on" | "off" for the attachment and connectivity checks.
 motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment,

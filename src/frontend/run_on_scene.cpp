@@ -93,22 +93,16 @@ RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArg
     throw UsageError(fmt::format("--max-motions {}: 1 or more", args.maxMotions));
   request.simulation.maxMotions = args.maxMotions;
   request.simulation.seed = parseSeed("--seed", args.seed);
-  for (const auto& [option, value] :
-       {std::pair{"--delay-ms", args.delayMs}, {"--jitter-ms", args.jitterMs}}) {
-    if (!std::isfinite(value) || value < 0) {
-      throw UsageError(fmt::format("{} {}: a number of milliseconds, 0 or more", option, value));
-    }
-  }
-  request.simulation.messageDelay = Time(args.delayMs * kMillisecond);
-  request.simulation.messageJitter = Time(args.jitterMs * kMillisecond);
+  request.simulation.messageDelay = parseMilliseconds("--delay-ms", args.delayMs);
+  request.simulation.messageJitter = parseMilliseconds("--jitter-ms", args.jitterMs);
+  if (args.timeoutS) request.reshape.timeout = parseSeconds("--timeout", *args.timeoutS);
+  if (args.untilS) request.until = parseSeconds("--until", *args.untilS);
   request.trace = args.wantTrace || !args.trace.empty();
   request.description = fmt::format("{} on {}", args.program, sceneName);
   const std::vector<target::Target>& targets =
       args.target.empty() ? scene.targets : unwrap(io::readScene(args.target)).targets;
   if (!args.target.empty() && targets.empty()) throw UsageError(args.target + " has no target");
   for (const target::Target& target : targets) request.targets.push_back(unwrap(target.cells()));
-  if (args.timeoutS > 0) request.reshape.timeout = Time(args.timeoutS * kSecond);
-  if (args.untilS > 0) request.until = Time(args.untilS * kSecond);
   // The scene's parameters for this program, then the command line's over them.
   if (const auto inScene = scene.parameters.find(args.program); inScene != scene.parameters.end()) {
     request.parameters = inScene->second;

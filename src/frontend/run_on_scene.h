@@ -25,14 +25,15 @@ inline constexpr int kDefaultLoadRegion = 0;
 struct RunArguments {
   std::string scene, program, goal, start, out, trace, target, root;
   std::vector<std::string> parameters;
-  double timeoutS = 0, untilS = 0;
+  // Seconds; not given: the program's own ending (parseSeconds checks them).
+  std::optional<double> timeoutS, untilS;
   bool stats = false;
   RuleArguments rules;
   // The modules' kind (empty: the scene's) and the 3D Catom's rule set (docs/catom3d.md).
   std::string module;
   std::string rolling = "symmetric";
   std::string seed = "1";
-  double delayMs = 10, jitterMs = 0;
+  double delayMs = 10, jitterMs = 0;  // parseMilliseconds checks them
   int maxMotions = 0;
   // --connectivity was given (reconfiguration keeps the ensemble connected unless told).
   bool connectivityGiven = false;

@@ -62,7 +62,7 @@ void Mechanics::compress(uint32_t index, int ownPiston) {
   const Time now = agenda_.now();
   announce_(&Observer::pistonMoving, now,
             PistonMove{module.id, ownPiston, 0, 1, now, deformationTime_, PistonCause::kProgram});
-  agenda_.schedule(now + deformationTime_, EventKind::kDeformationDone, index, 0);
+  agenda_.schedule(timeAfter(now, deformationTime_), EventKind::kDeformationDone, index, 0);
 }
 
 Status Mechanics::release(uint32_t index) {
@@ -79,7 +79,7 @@ Status Mechanics::release(uint32_t index) {
   announce_(
       &Observer::pistonMoving, now,
       PistonMove{module.id, state.piston, 1, 0, now, deformationTime_, PistonCause::kProgram});
-  agenda_.schedule(now + deformationTime_, EventKind::kDeformationDone, index, 0);
+  agenda_.schedule(timeAfter(now, deformationTime_), EventKind::kDeformationDone, index, 0);
   return Ok{};
 }
 

@@ -47,7 +47,7 @@ void MotionExecutor::begin(uint32_t index, const motion::Motion& motion, Claim c
   announce_(&Observer::turnStarted, now,
             QuarterTurn{m.id, p.id, p.cell, rule.up, geometry::oppositeAxis(rule.front),
                         geometry::oppositeAxis(rule.right), 90.0, times_.quarterTurn, true});
-  agenda_.schedule(now + times_.quarterTurn, EventKind::kMotionMiddle, index, slot);
+  agenda_.schedule(timeAfter(now, times_.quarterTurn), EventKind::kMotionMiddle, index, slot);
 }
 
 ActiveMotion MotionExecutor::plan(const motion::Motion& motion, uint32_t mobileIndex,
@@ -106,7 +106,8 @@ void MotionExecutor::middle(int slot) {
     const uint32_t index = *world_.indexOf(d.module);
     mechanics_.beginSwitch(index, world_.modules()[index].orientation.ownPiston(d.secondAxis));
   }
-  agenda_.schedule(now + times_.deformation, EventKind::kMotionSwitch, active.mobile, slot);
+  agenda_.schedule(timeAfter(now, times_.deformation), EventKind::kMotionSwitch, active.mobile,
+                   slot);
 }
 
 void MotionExecutor::switchPistons(int slot) {
@@ -117,8 +118,8 @@ void MotionExecutor::switchPistons(int slot) {
     if (d.secondAxis < 0) continue;
     mechanics_.finishSwitch(*world_.indexOf(d.module), motionOf_);
   }
-  agenda_.schedule(agenda_.now() + times_.deformation, EventKind::kMotionResume, active.mobile,
-                   slot);
+  agenda_.schedule(timeAfter(agenda_.now(), times_.deformation), EventKind::kMotionResume,
+                   active.mobile, slot);
 }
 
 void MotionExecutor::resume(int slot) {
@@ -135,7 +136,7 @@ void MotionExecutor::resume(int slot) {
       &Observer::turnStarted, now,
       QuarterTurn{mobile.id, pivot.id, pivot.cell, rule.up, active.goalAxis,
                   *geometry::crossAxes(rule.up, active.goalAxis), 90.0, times_.quarterTurn, false});
-  agenda_.schedule(now + times_.quarterTurn, EventKind::kMotionEnd, active.mobile, slot);
+  agenda_.schedule(timeAfter(now, times_.quarterTurn), EventKind::kMotionEnd, active.mobile, slot);
 }
 
 }  // namespace datomsim::sim

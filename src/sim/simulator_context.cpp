@@ -136,7 +136,8 @@ int Simulator::ProgramContext::goalsAsPivot(const Cell& mobileCell, std::array<C
 }
 
 void Simulator::ProgramContext::setTimer(Time delay, int tag) {
-  simulator_.agenda_.schedule(now() + std::max<Time>(0, delay), EventKind::kTimer, index_, tag);
+  simulator_.agenda_.schedule(timeAfter(now(), std::max<Time>(0, delay)), EventKind::kTimer, index_,
+                              tag);
 }
 
 void Simulator::ProgramContext::setColor(Color color) {

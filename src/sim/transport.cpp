@@ -90,7 +90,7 @@ int Transport::sendToAll(uint32_t index, int exceptConnector, const Message& mes
     return count;
   }
   // Without jitter they all arrive together: one record in the agenda for all of them.
-  const Time arrival = agenda_.now() + times_.delay;
+  const Time arrival = timeAfter(agenda_.now(), times_.delay);
   std::array<EventQueue::Receiver, geometry::kDirectionCount> receivers;
   for (int i = 0; i < count; ++i) {
     receivers[size_t(i)] = {partners[size_t(i)], partnerConnectors[size_t(i)]};
@@ -107,7 +107,7 @@ void Transport::deliver(const Module& sender, uint32_t partner, int partnerConne
                         const Message& message) {
   Time delay = times_.delay;
   if (times_.jitter > 0) delay += random_.between(0, times_.jitter);
-  const Time arrival = agenda_.now() + delay;
+  const Time arrival = timeAfter(agenda_.now(), delay);
   if (announce_.hearsEvents()) {
     announce_(&Observer::messageSent, agenda_.now(), sender.id, world_.modules()[partner].id,
               message, arrival);

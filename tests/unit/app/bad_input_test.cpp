@@ -141,9 +141,9 @@ TEST_F(BadInput, CoordinatesOutsideTheSupportedRangeAreRefusedAtEveryEntry) {
 
 TEST_F(BadInput, NumbersThatAreNotFiniteAndSeedsOutOfRangeAreRefused) {
   const std::string run = "run " + box() + " --program flood --root 0,0,0 ";
-  refused(run + "--delay-ms nan", "--delay-ms: must be a finite number >= 0, got nan");
-  refused(run + "--jitter-ms inf", "--jitter-ms: must be a finite number >= 0, got inf");
-  refused(run + "--until -1", "--until: must be a finite number > 0, got -1");
+  refused(run + "--delay-ms nan", "--delay-ms nan: a finite number of milliseconds, 0 or more");
+  refused(run + "--jitter-ms inf", "--jitter-ms inf: a finite number of milliseconds, 0 or more");
+  refused(run + "--until -1", "--until -1: a finite number of seconds, above 0");
   refused(run + "--seed 99999999999999999999999",
           "--seed \"99999999999999999999999\" must be an integer from 0 to 18446744073709551615");
   refused(run + "--seed -1", "--seed \"-1\" must be an integer");

@@ -84,7 +84,7 @@ bool SceneHandler::key(Json::string_t& name) {
   if (capturing_) {
     // Inside a captured value (targets, visiblesim) a repeated key would silently replace the
     // first; refuse it as everywhere else.
-    if (captureStack_.back()->contains(name)) {
+    if (!captureKeys_.back().insert(name).second) {
       return fail(key_, fmt::format("duplicate key \"{}\"", name));
     }
     captureKey_ = name;
@@ -126,6 +126,17 @@ Result<Scene> SceneHandler::finish() {
   // error; otherwise the cells are indexed now, once all modules are in (World::addUnindexed).
   if (placementError_) return Error{*placementError_};
   if (const auto clash = world.indexCells()) return Error{clashError(clash->first)};
+  // A grid target's cell no module may hold could never be filled: refused as a module's would
+  // be (the grid may come after the targets in the file, so they are checked here).
+  for (size_t t = 0; t < scene_.targets.size(); ++t) {
+    const std::vector<target::GridCell>& cells = scene_.targets[t].gridCells();
+    for (size_t i = 0; i < cells.size(); ++i) {
+      if (const std::string outside = world.bounds().whyOutside(cells[i].cell); !outside.empty()) {
+        return failure(fmt::format("targets[{}].cells[{}]", t, i),
+                       fmt::format("cell {} {}", geometry::toString(cells[i].cell), outside));
+      }
+    }
+  }
   world.shrinkToFit();
   world.latchAllNeighbours();
   return std::move(scene_);

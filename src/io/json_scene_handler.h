@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -135,6 +136,10 @@ class SceneHandler {
   bool capturing_ = false;
   Json captured_;
   std::vector<Json*> captureStack_;
+  // The keys of each captured object on the stack (empty for arrays): a duplicate is found in
+  // constant time, where the ordered object's own search is linear, and a value of many keys
+  // would be read in quadratic time.
+  std::vector<std::unordered_set<std::string>> captureKeys_;
   std::string captureKey_;
 
   Scene scene_;

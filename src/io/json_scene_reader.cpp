@@ -6,6 +6,9 @@
 
 #include <fmt/format.h>
 
+#include <iterator>
+#include <optional>
+#include <streambuf>
 #include <string>
 #include <utility>
 
@@ -47,6 +50,7 @@ bool SceneHandler::open(Json container) {
   }
   if (capturing_) {
     captureStack_.push_back(&insertIntoCapture(std::move(container)));
+    captureKeys_.emplace_back();
     return true;
   }
   // The document's own structure.
@@ -78,6 +82,7 @@ bool SceneHandler::open(Json container) {
   captured_ = std::move(container);
   if (captured_.is_array()) captured_.get_ref<Json::array_t&>().reserve(4);
   captureStack_.assign(1, &captured_);
+  captureKeys_.assign(1, {});
   capturing_ = true;
   return true;
 }
@@ -85,6 +90,7 @@ bool SceneHandler::open(Json container) {
 bool SceneHandler::close() {
   if (capturing_) {
     captureStack_.pop_back();
+    captureKeys_.pop_back();
     if (!captureStack_.empty()) return true;
     capturing_ = false;
     return dispatch();
@@ -112,7 +118,10 @@ Json& SceneHandler::insertIntoCapture(Json value) {
     parent.push_back(std::move(value));
     return parent.back();
   }
-  return parent[captureKey_] = std::move(value);
+  // Appended: key() has refused a duplicate already (operator[] would search the object again).
+  auto& members = static_cast<Json::object_t::Container&>(parent.get_ref<Json::object_t&>());
+  members.emplace_back(captureKey_, std::move(value));
+  return members.back().second;
 }
 
 }  // namespace detail
@@ -141,11 +150,71 @@ Error syntaxError(const SceneHandler& handler, std::string_view source, LineColu
   return Error{fmt::format("{}:{}:{}: {}", source, at.line, at.column, handler.syntaxMessage())};
 }
 
+Error nulError(std::string_view source, LineColumn at) {
+  return Error{fmt::format("{}:{}:{}: a NUL byte, which no JSON text holds (a scene file is text)",
+                           source, at.line, at.column + 1)};
+}
+
+// A stream's bytes for nlohmann's parser, with their lines and columns counted as they are read:
+// a pipe cannot be read again to find where an error lies. nlohmann takes a NUL byte for the end
+// of its input, and would accept a scene followed by a NUL and anything: a NUL is given as a
+// byte no JSON text holds, so that the parse fails there, and its place is kept.
+class CountedBytes {
+ public:
+  struct State {
+    explicit State(std::streambuf& source) : buffer(&source) {}
+    std::streambuf* buffer;
+    size_t read = 0;
+    LineColumn at;
+    // Where the last byte read began (nlohmann may place an error on the byte it just read).
+    LineColumn beforeLast;
+    std::optional<LineColumn> nul;
+  };
+
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = char;
+
+  CountedBytes() = default;
+  explicit CountedBytes(State& state) : state_(&state) {}
+
+  char operator*() const {
+    const char c = std::char_traits<char>::to_char_type(state_->buffer->sgetc());
+    if (c != '\0') return c;
+    if (!state_->nul) state_->nul = state_->at;
+    return '\x01';
+  }
+  CountedBytes& operator++() {
+    state_->beforeLast = state_->at;
+    state_->at.advance(std::char_traits<char>::to_char_type(state_->buffer->sbumpc()));
+    ++state_->read;
+    return *this;
+  }
+  CountedBytes operator++(int) {
+    CountedBytes before = *this;
+    ++*this;
+    return before;
+  }
+  bool operator==(const CountedBytes& other) const { return atEnd() == other.atEnd(); }
+
+ private:
+  bool atEnd() const { return !state_ || state_->buffer->sgetc() == std::char_traits<char>::eof(); }
+  State* state_ = nullptr;
+};
+
 }  // namespace
 
 namespace detail {
 
 Result<Scene> readJsonSceneGeneral(std::string_view text, std::string_view source) {
+  // nlohmann would end the document at a NUL byte, and accept what precedes it.
+  if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    LineColumn at;
+    for (size_t i = 0; i < nul; ++i) at.advance(text[i]);
+    return nulError(source, at);
+  }
   SceneHandler handler(source);
   if (Json::sax_parse(text.begin(), text.end(), &handler)) return handler.finish();
   if (const auto position = handler.syntaxPosition()) {
@@ -159,13 +228,16 @@ Result<Scene> readJsonSceneGeneral(std::string_view text, std::string_view sourc
 }  // namespace detail
 
 Result<Scene> parseJsonScene(std::string_view text, std::string_view source) {
-  if (auto scene = detail::readJsonSceneFast(text, source)) return std::move(*scene);
+  if (text.find('\0') == std::string_view::npos) {
+    if (auto scene = detail::readJsonSceneFast(text, source)) return std::move(*scene);
+  }
   return detail::readJsonSceneGeneral(text, source);
 }
 
 Result<Scene> parseJsonScene(std::istream& input, std::string_view source) {
   // The fast path declines by having read part of the stream: it needs one that can be read
-  // again from its start (a file; a pipe goes to the general reader directly).
+  // again from its start (a file; a pipe goes to the general reader directly). It declines a
+  // NUL byte.
   const auto start = input.tellg();
   if (start != std::istream::pos_type(-1)) {
     if (auto scene = detail::readJsonSceneFast(input, source)) return std::move(*scene);
@@ -173,14 +245,12 @@ Result<Scene> parseJsonScene(std::istream& input, std::string_view source) {
     input.seekg(start);
   }
   SceneHandler handler(source);
-  if (Json::sax_parse(input, &handler)) return handler.finish();
+  CountedBytes::State bytes(*input.rdbuf());
+  const bool parsed = Json::sax_parse(CountedBytes(bytes), CountedBytes(), &handler);
+  if (bytes.nul) return nulError(source, *bytes.nul);
+  if (parsed) return handler.finish();
   if (const auto position = handler.syntaxPosition()) {
-    input.clear();
-    input.seekg(start == std::istream::pos_type(-1) ? std::istream::pos_type(0) : start);
-    LineColumn at;
-    char c;
-    for (size_t i = 0; i < *position && input.get(c); ++i) at.advance(c);
-    return syntaxError(handler, source, at);
+    return syntaxError(handler, source, *position + 1 == bytes.read ? bytes.beforeLast : bytes.at);
   }
   return Error{handler.error()};
 }

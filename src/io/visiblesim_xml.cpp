@@ -60,80 +60,6 @@ const char* describeXmlError(XMLError error) {
   }
 }
 
-// Whether a code point is a character XML 1.0 allows (its production Char).
-bool isXmlChar(uint64_t c) {
-  return c == 0x9 || c == 0xA || c == 0xD || (c >= 0x20 && c <= 0xD7FF) ||
-         (c >= 0xE000 && c <= 0xFFFD) || (c >= 0x10000 && c <= 0x10FFFF);
-}
-
-// What tinyxml2 lets through and silently mangles: a '&' that starts no reference (it keeps the
-// text raw, or drops what follows a bad numeric reference) and control characters. Comments,
-// CDATA sections and processing instructions are skipped. The error names the line.
-Status checkXmlCharacters(std::string_view text, std::string_view source) {
-  int line = 1;
-  auto error = [&](const std::string& what) {
-    return Error{fmt::format("{}:{}: malformed XML: {}", source, line, what)};
-  };
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '\n') ++line;
-    if (c == '<') {
-      // Skip what may hold any character up to its end marker.
-      for (const auto& [open, close] :
-           {std::pair{"<!--", "-->"}, std::pair{"<![CDATA[", "]]>"}, std::pair{"<?", "?>"}}) {
-        if (text.substr(i).starts_with(open)) {
-          const size_t end = text.find(close, i);
-          if (end == std::string_view::npos) return error(fmt::format("unclosed {}", open));
-          for (size_t k = i; k < end; ++k) line += text[k] == '\n';
-          i = end + std::string_view(close).size() - 1;
-          break;
-        }
-      }
-      continue;
-    }
-    if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
-      return error(fmt::format("control character U+{:04X} is not allowed", int(c)));
-    }
-    if (c != '&') continue;
-    // The reference: '&', then letters, digits and '#', then ';' when there is one.
-    size_t end = i + 1;
-    while (end < text.size() && end - i < 12 &&
-           (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '#')) {
-      ++end;
-    }
-    if (end < text.size() && text[end] == ';') ++end;
-    const std::string_view reference = text.substr(i, end - i);
-    bool valid = false;
-    if (reference == "&lt;" || reference == "&gt;" || reference == "&amp;" ||
-        reference == "&quot;" || reference == "&apos;") {
-      valid = true;
-    } else if (reference.starts_with("&#") && reference.ends_with(';') && reference.size() > 3) {
-      const bool hex = reference[2] == 'x';
-      const std::string_view digits =
-          reference.substr(hex ? 3 : 2, reference.size() - (hex ? 4 : 3));
-      uint64_t value = 0;
-      valid = !digits.empty() && digits.size() <= 8;
-      for (const char d : digits) {
-        const int digit = d >= '0' && d <= '9'          ? d - '0'
-                          : hex && d >= 'a' && d <= 'f' ? d - 'a' + 10
-                          : hex && d >= 'A' && d <= 'F' ? d - 'A' + 10
-                                                        : -1;
-        if (digit < 0) valid = false;
-        value = value * (hex ? 16 : 10) + uint64_t(std::max(digit, 0));
-      }
-      valid = valid && isXmlChar(value);
-    }
-    if (!valid) {
-      return error(
-          fmt::format("\"{}\" is no character reference: write & as &amp; (references "
-                      "are &lt; &gt; &amp; &quot; &apos; and &#N; for an allowed "
-                      "character)",
-                      reference));
-    }
-  }
-  return Ok{};
-}
-
 // Reads one document; keeps the source name and the line of every block for error messages.
 class XmlSceneReader {
  public:
@@ -143,7 +69,7 @@ class XmlSceneReader {
   // and any problem with them gives an empty error (the caller then reads the whole text).
   Result<Scene> read(std::string_view text, const std::vector<detail::ScannedBlock>* scanned) {
     scanned_ = scanned;
-    if (Status characters = checkXmlCharacters(text, source_); !characters) {
+    if (Status characters = detail::checkXmlText(text, source_); !characters) {
       return Error{characters.error()};
     }
     XMLDocument document;
@@ -152,6 +78,13 @@ class XmlSceneReader {
     }
     const XMLElement* worldElement = document.RootElement();
     if (!worldElement) return Error{fmt::format("{}: missing <world> element", source_)};
+    // tinyxml2 reads a second root element as if it were part of the document; XML allows one.
+    if (const XMLElement* second = worldElement->NextSiblingElement()) {
+      return errorAt(second,
+                     fmt::format("a second root element <{}> after <{}> (line {}); a "
+                                 "document has one",
+                                 second->Name(), worldElement->Name(), worldElement->GetLineNum()));
+    }
     if (std::strcmp(worldElement->Name(), "world") != 0) {
       return errorAt(worldElement, fmt::format("the root element is <{}>, expected <world>",
                                                worldElement->Name()));
@@ -193,7 +126,8 @@ class XmlSceneReader {
 
     if (Status status = readBlocks(*blockList, scene); !status) return Error{status.error()};
     if (targetList) {
-      Result<std::vector<target::Target>> targets = detail::readTargetList(*targetList, source_);
+      Result<std::vector<target::Target>> targets =
+          detail::readTargetList(*targetList, source_, scene.world.bounds());
       if (!targets) return Error{targets.error()};
       scene.targets = std::move(targets).value();
     }

@@ -16,6 +16,7 @@
 #include "geometry/vec3.h"
 #include "io/scene.h"
 #include "target/target.h"
+#include "world/bounds.h"
 #include "world/module.h"
 
 namespace datomsim::io::detail {
@@ -33,6 +34,15 @@ std::optional<std::array<double, 3>> parseBlockSize(const char* text);
 std::optional<bool> parseBool(const char* text);
 // Three finite numbers "x,y,z".
 std::optional<geometry::Vec3> parseVector(const char* text);
+
+// The most attributes one element may have: tinyxml2 looks for each attribute among those before
+// it, so an element of many attributes would be read in a time quadratic in their number.
+inline constexpr size_t kMaxXmlAttributes = 100;
+
+// What tinyxml2 lets through and silently mangles or reads slowly, refused naming the line: bytes
+// that are not UTF-8 characters XML allows, control characters, a '&' that starts no reference,
+// an element of more than kMaxXmlAttributes attributes (xml_text_check.cpp).
+Status checkXmlText(std::string_view text, std::string_view source);
 
 // "source:line: message", the line being the element's.
 Error errorAt(std::string_view source, const tinyxml2::XMLElement* element,
@@ -64,9 +74,11 @@ std::optional<BlockRegion> scanBlockList(std::string_view text);
 // The general reader alone, without the fast path (for tests that compare the two).
 Result<Scene> readVisibleSimXmlGeneral(std::string_view text, std::string_view source);
 
-// The targets of a <targetList>, in file order.
+// The targets of a <targetList>, in file order. A grid target's cell that `bounds` would not let a
+// module hold is refused, as a module's would be.
 Result<std::vector<target::Target>> readTargetList(const tinyxml2::XMLElement& targetList,
-                                                   std::string_view source);
+                                                   std::string_view source,
+                                                   const world::Bounds& bounds);
 
 // Prints the <targetList> of the targets; nothing when there are none.
 void printTargetList(tinyxml2::XMLPrinter& printer, const std::vector<target::Target>& targets);

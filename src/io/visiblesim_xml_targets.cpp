@@ -9,6 +9,7 @@
 
 #include "io/number_text.h"
 #include "io/visiblesim_xml_detail.h"
+#include "world/bounds.h"
 
 namespace datomsim::io::detail {
 
@@ -24,7 +25,8 @@ std::string brief(std::string_view text) {
 
 class TargetReader {
  public:
-  explicit TargetReader(std::string_view source) : source_(source) {}
+  TargetReader(std::string_view source, const world::Bounds& bounds)
+      : source_(source), bounds_(bounds) {}
 
   Result<target::Target> read(const XMLElement& element) const {
     std::optional<Color> color;
@@ -69,6 +71,10 @@ class TargetReader {
         return attributeError(source_, child, "position", position, "must be three integers x,y,z");
       }
       cell.cell = *parsed;
+      // A cell no module may hold could never be filled: refused as a module's would be.
+      if (const std::string outside = bounds_.whyOutside(cell.cell); !outside.empty()) {
+        return attributeError(source_, child, "position", position, outside);
+      }
       if (const char* text = child->Attribute("color")) {
         cell.color = parseColor(text);
         if (!cell.color) {
@@ -123,6 +129,7 @@ class TargetReader {
   }
 
   std::string_view source_;
+  world::Bounds bounds_;
 };
 
 std::string colorText(const Color& color) {
@@ -132,9 +139,10 @@ std::string colorText(const Color& color) {
 }  // namespace
 
 Result<std::vector<target::Target>> readTargetList(const XMLElement& targetList,
-                                                   std::string_view source) {
+                                                   std::string_view source,
+                                                   const world::Bounds& bounds) {
   std::vector<target::Target> targets;
-  const TargetReader reader(source);
+  const TargetReader reader(source, bounds);
   for (const XMLElement* element = targetList.FirstChildElement("target"); element;
        element = element->NextSiblingElement("target")) {
     Result<target::Target> target = reader.read(*element);

@@ -121,6 +121,19 @@ TEST(JsonSceneTargets, RefusesBadGridCellsAndColours) {
             "[0,0,300]");
 }
 
+// A cell no module may hold could never be filled; the grid may come after the targets.
+TEST(JsonSceneTargets, RefusesGridCellsBelowTheGroundBeyondTheRangeOrOutsideTheGrid) {
+  EXPECT_EQ(errorOf(withTargets(R"({"format":"grid","cells":[[1,1,0],[1,1,-3]]})")),
+            "box.json: targets[0].cells[1]: cell 1,1,-3 is below the ground (z < 0)");
+  EXPECT_EQ(errorOf(withTargets(R"({"format":"grid","cells":[[5000000,1,0]]})")),
+            "box.json: targets[0].cells[0]: cell 5000000,1,0 is outside the supported "
+            "coordinate range (-1048576 to 1048575)");
+  EXPECT_EQ(errorOf(R"({"format":"datomsim-scene","version":1,"modules":[],"targets":[)"
+                    R"({"format":"grid","cells":[[1,1,0]]},{"format":"grid","cells":[[12,1,0]]}],)"
+                    R"("grid":[11,11,11]})"),
+            "box.json: targets[1].cells[0]: cell 12,1,0 is outside the grid 11,11,11");
+}
+
 TEST(JsonSceneTargets, RefusesBadCsgTargets) {
   EXPECT_EQ(errorOf(withTargets(R"({"format":"csg"})")),
             "box.json: targets[0]: missing \"content\"");

@@ -1,8 +1,10 @@
 #include "io/json_scene.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 
@@ -166,6 +168,62 @@ TEST(JsonScene, StreamReaderFindsTheSameLineAndColumn) {
   const auto scene = parseJsonScene(input, "box.json");
   ASSERT_FALSE(scene.ok());
   EXPECT_EQ(scene.error().rfind("box.json:3:16: ", 0), 0u) << scene.error();
+}
+
+// nlohmann takes a NUL byte for the end of its input: a scene followed by a NUL and anything was
+// read as if the rest were not there.
+TEST(JsonScene, RefusesANulByteNamingItsPlace) {
+  const std::string text = withModules("") + "\n" + std::string(1, '\0') + "garbage{";
+  const std::string expected =
+      "box.json:" + std::to_string(1 + std::count(text.begin(), text.end(), '\n') - 0) +
+      ":1: a NUL byte, which no JSON text holds (a scene file is text)";
+  EXPECT_EQ(errorOf(text), expected);
+  std::istringstream input(text);
+  const auto scene = parseJsonScene(input, "box.json");
+  ASSERT_FALSE(scene.ok());
+  EXPECT_EQ(scene.error(), expected);
+  // In a string, too.
+  std::istringstream inString("{\"format\": \"datomsim-scene\", \"name\": \"a" +
+                              std::string(1, '\0') + "b\"}");
+  const auto named = parseJsonScene(inString, "box.json");
+  ASSERT_FALSE(named.ok());
+  EXPECT_EQ(named.error(),
+            "box.json:1:40: a NUL byte, which no JSON text holds (a scene file is text)");
+}
+
+// A stream that cannot be read again (a pipe) still names the error's line and column.
+TEST(JsonScene, StreamThatCannotSeekFindsTheSameLineAndColumn) {
+  struct OneWay : std::stringbuf {
+    using std::stringbuf::stringbuf;
+    pos_type seekoff(off_type, std::ios_base::seekdir, std::ios_base::openmode) override {
+      return pos_type(off_type(-1));
+    }
+    pos_type seekpos(pos_type, std::ios_base::openmode) override { return pos_type(off_type(-1)); }
+  };
+  OneWay buffer("{\n  \"format\": \"datomsim-scene\",\n  \"version\": 1 x\n}\n");
+  std::istream input(&buffer);
+  const auto scene = parseJsonScene(input, "box.json");
+  ASSERT_FALSE(scene.ok());
+  EXPECT_EQ(scene.error().rfind("box.json:3:16: ", 0), 0u) << scene.error();
+}
+
+// Keys inside a captured value (visiblesim.world) were searched one by one: 150,000 keys took over
+// a minute. They read in linear time now, and a duplicate among them is still refused.
+TEST(JsonScene, ReadsManyViewerAttributesAndRefusesADuplicateAmongThem) {
+  std::string world;
+  for (int i = 0; i < 150000; ++i) world += fmt::format("\"k{}\": \"1\",", i);
+  const std::string text =
+      "{\"format\": \"datomsim-scene\", \"version\": 1, \"visiblesim\": "
+      "{\"world\": {" +
+      world + "\"last\": \"2\"}}, \"modules\": []}";
+  const auto scene = parseJsonScene(text, "box.json");
+  ASSERT_TRUE(scene.ok()) << scene.error();
+  EXPECT_EQ(scene->visibleSim.world.size(), 150001u);
+  EXPECT_EQ(scene->visibleSim.world.back().name, "last");
+  const std::string twice =
+      "{\"format\": \"datomsim-scene\", \"version\": 1, \"visiblesim\": "
+      "{\"world\": {\"a\": \"1\", \"b\": \"2\", \"a\": \"3\"}}, \"modules\": []}";
+  EXPECT_NE(errorOf(twice).find("duplicate key \"a\""), std::string::npos) << errorOf(twice);
 }
 
 TEST(JsonScene, RefusesAnotherFormat) {

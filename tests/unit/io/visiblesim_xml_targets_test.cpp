@@ -149,6 +149,22 @@ TEST(VisibleSimXmlTargets, RefusesBadGridCellsNamingTheirLine) {
             "position=\"x,y,z\"/>");
 }
 
+// A cell no module may hold could never be filled: refused as a module's would be.
+TEST(VisibleSimXmlTargets, RefusesGridCellsBelowTheGroundBeyondTheRangeOrOutsideTheGrid) {
+  const auto withCell = [](const std::string& position) {
+    return xmlWithTargets(
+        "<target format=\"grid\">\n<cell position=\"1,1,0\"/>\n<cell position=\"" + position +
+        "\"/>\n</target>\n");
+  };
+  EXPECT_EQ(errorOf(withCell("1,1,-3")),
+            "scene.xml:9: cell position \"1,1,-3\" is below the ground (z < 0)");
+  EXPECT_EQ(errorOf(withCell("5000000,1,0")),
+            "scene.xml:9: cell position \"5000000,1,0\" is outside the supported coordinate "
+            "range (-1048576 to 1048575)");
+  EXPECT_EQ(errorOf(withCell("11,1,0")),
+            "scene.xml:9: cell position \"11,1,0\" is outside the grid 11,11,11");
+}
+
 TEST(VisibleSimXmlTargets, RefusesBadCsgTargetsNamingTheirLineAndValue) {
   EXPECT_EQ(errorOf(xmlWithTargets("<target format=\"csg\"/>\n")),
             "scene.xml:7: target of format csg has no <csg> element");

@@ -141,6 +141,56 @@ TEST(VisibleSimXml, RefusesAMismatchedEndTag) {
   EXPECT_NE(error.find("XML_ERROR_MISMATCHED_ELEMENT"), std::string::npos) << error;
 }
 
+TEST(VisibleSimXml, RefusesASecondRootElement) {
+  EXPECT_EQ(errorOf(xmlWithBlocks("") + "<world gridSize=\"3,3,3\"><blockList/></world>\n"),
+            "scene.xml:6: a second root element <world> after <world> (line 2); a document "
+            "has one");
+}
+
+TEST(VisibleSimXml, RefusesBytesThatAreNotUtf8NamingTheLine) {
+  EXPECT_EQ(errorOf(xmlWithBlocks("<!-- caf\xE9 -->\n")),
+            "scene.xml:4: malformed XML: byte 0xE9 starts no UTF-8 character XML allows (a file "
+            "in Latin-1 or another encoding must be converted to UTF-8)");
+  // In an attribute value, an overlong form, a surrogate, a sequence cut short, U+FFFE.
+  for (const std::string bytes :
+       {"\xE9t\xE9", "\xC0\xAF", "\xED\xA0\x80", "\xE2\x82", "\xEF\xBF\xBE"}) {
+    const std::string error =
+        errorOf(xmlWithBlocks("<block position=\"1,1,0\" name=\"" + bytes + "\"/>\n"));
+    EXPECT_EQ(error.rfind("scene.xml:4: malformed XML: byte 0x", 0), 0u) << error;
+  }
+  // Well-formed UTF-8 of two, three and four bytes reads.
+  const auto scene = parseVisibleSimXml(
+      xmlWithBlocks(
+          "<!-- \xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80 -->\n<block position=\"1,1,0\"/>\n"),
+      "scene.xml");
+  ASSERT_TRUE(scene.ok()) << scene.error();
+  EXPECT_EQ(scene->world.size(), 1u);
+}
+
+TEST(VisibleSimXml, RefusesANulByteAndWhatFollowsIt) {
+  const std::string text = xmlWithBlocks("<block position=\"1,1,0\"/>\n");
+  EXPECT_EQ(errorOf(text + std::string(1, '\0') + "<garbage"),
+            "scene.xml:7: malformed XML: control character U+0000 is not allowed");
+}
+
+// tinyxml2 looks for each attribute among those before it: many attributes would take a time
+// quadratic in their number (150,000 took over a minute).
+TEST(VisibleSimXml, RefusesAnElementOfTooManyAttributesBeforeParsingIt) {
+  std::string attributes;
+  for (size_t i = 0; i < 150000; ++i) attributes += " a" + std::to_string(i) + "=\"1\"";
+  std::string text = xmlWithBlocks("");
+  text.insert(text.find("<world ") + 6, attributes);
+  EXPECT_EQ(errorOf(text),
+            "scene.xml:2: malformed XML: an element with more than 100 "
+            "attributes (docs/limits.md)");
+  // Up to the limit it reads, whatever '=' and '>' its quoted values hold.
+  attributes.clear();
+  for (size_t i = 0; i < 99; ++i) attributes += " a" + std::to_string(i) + "='x=>y'";
+  text = xmlWithBlocks("");
+  text.insert(text.find("<world ") + 6, attributes);
+  ASSERT_TRUE(parseVisibleSimXml(text, "scene.xml").ok());
+}
+
 TEST(VisibleSimXml, RefusesAnEmptyDocument) {
   EXPECT_EQ(errorOf(""),
             "scene.xml: malformed XML: the document is empty "

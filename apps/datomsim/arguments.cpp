@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <string_view>
 
 namespace datomsim::app {
@@ -36,8 +37,24 @@ CLI::Validator numberAtLeast(double low, bool strictly, const char* name) {
       name);
 }
 
+// CLI11's own PositiveNumber prints its range up to the largest double, 309 digits.
+CLI::Validator integerAtLeast(int64_t low, const char* name) {
+  return CLI::Validator(
+      [low](std::string& text) -> std::string {
+        int64_t value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || end != text.data() + text.size() || value < low) {
+          return fmt::format("must be an integer >= {}, got {}", low, text);
+        }
+        return {};
+      },
+      name);
+}
+
 }  // namespace
 
+const CLI::Validator kPositiveInteger = integerAtLeast(1, "INTEGER>0");
+const CLI::Validator kNonNegativeInteger = integerAtLeast(0, "INTEGER>=0");
 const CLI::Validator kNonNegative = numberAtLeast(0, false, "NUMBER>=0");
 const CLI::Validator kPositive = numberAtLeast(0, true, "NUMBER>0");
 

@@ -30,6 +30,9 @@ extern const CLI::Validator kFinite;
 // Finite numbers >= 0, and > 0.
 extern const CLI::Validator kNonNegative;
 extern const CLI::Validator kPositive;
+// Integers >= 1, and >= 0, named in one short message ("must be an integer >= 1, got 0").
+extern const CLI::Validator kPositiveInteger;
+extern const CLI::Validator kNonNegativeInteger;
 
 // The kind --module names, or the scene's when it names none (the name checked by the option).
 world::ModuleKind kindFor(const std::string& module, const io::Scene& scene);

@@ -71,7 +71,7 @@ void addReach(CLI::App& app, const Reporter& reporter) {
                    "(default 4000 without --scale, no limit with it; 0: no limit). A picture "
                    "drawn smaller than asked, or whose cells are too small for their numbers, "
                    "says so under its title and on standard error")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegativeInteger);
   command
       ->add_option("--palette", asked.palette,
                    "How distances are coloured in the pictures: paper (the paper's ten colours, "

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "arguments.h"
 #include "commands.h"
 #include "geometry/lattice.h"
 #include "io/scene_file.h"
@@ -178,11 +179,11 @@ void addGenerate(CLI::App& app, const Reporter& reporter) {
                    random->generate);
   randomCommand->add_option("--seed", random->seed, "Seed")->capture_default_str();
   randomCommand->add_option("--count", random->count, "Number of modules")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositiveInteger)
       ->capture_default_str();
   randomCommand->add_option("--grid", random->grid, "Declare a grid X,Y,Z (default: none)");
   randomCommand->add_option("--height", random->height, "Layers the scene may use")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositiveInteger)
       ->capture_default_str();
   randomCommand->add_flag("--random-orientations", random->orientations,
                           "Draw each module's orientation");

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 
@@ -59,12 +60,18 @@ std::filesystem::path outputFor(const std::string& out, const std::filesystem::p
   return path;
 }
 
-// "1280x720" -> {1280, 720}.
+// "1280x720" -> {1280, 720}. Read with from_chars: sscanf's %d wraps a number beyond int, and the
+// message would echo another number than the one given.
 std::pair<int, int> parseSize(const std::string& text) {
   int width = 0, height = 0;
-  char x = 0, rest = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &rest) != 3 || x != 'x') {
-    throw UsageError(fmt::format("--size {}: write WIDTHxHEIGHT in pixels, e.g. 1280x720", text));
+  const char* const end = text.data() + text.size();
+  const auto [afterWidth, widthError] = std::from_chars(text.data(), end, width);
+  const bool separated = widthError == std::errc() && afterWidth != end && *afterWidth == 'x';
+  const auto [afterHeight, heightError] =
+      separated ? std::from_chars(afterWidth + 1, end, height) : std::from_chars_result{};
+  if (!separated || heightError != std::errc() || afterHeight != end) {
+    throw UsageError(fmt::format(
+        "--size {}: write WIDTHxHEIGHT in pixels, each within 64..3840, e.g. 1280x720", text));
   }
   return {width, height};
 }

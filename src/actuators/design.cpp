@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -256,6 +257,12 @@ double Design::figure(std::string_view key) const {
 }
 
 Result<Design> parseDesign(std::string_view text, const std::string& fileName) {
+  // nlohmann takes a NUL byte for the end of its input, and would accept what precedes it.
+  if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    return Error{
+        fmt::format("{}:{}: a NUL byte, which no JSON text holds", fileName,
+                    1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(nul), '\n'))};
+  }
   Json document;
   try {
     document = Json::parse(text);

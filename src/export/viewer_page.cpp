@@ -248,6 +248,12 @@ Result<std::string> checkOverlay(const std::string& text, const std::string& nam
     return Error{
         fmt::format("{}:{}: values nested deeper than {} levels", name, *line, kMaxNesting)};
   }
+  // nlohmann takes a NUL byte for the end of its input, and would accept what precedes it.
+  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+    return Error{
+        fmt::format("{}:{}: a NUL byte, which no JSON text holds", name,
+                    1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(nul), '\n'))};
+  }
   const Json overlay = Json::parse(text, nullptr, false);
   if (overlay.is_discarded()) return Error{fmt::format("{}: invalid JSON", name)};
   if (!overlay.is_object()) return Error{fmt::format("{}: a distance map must be an object", name)};

@@ -1,5 +1,7 @@
 #include "scene/reshape.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -81,6 +83,15 @@ Result<ReshapeCase> lineToBlock(int length) {
   if (length < 8 || length % 4 != 0) {
     return Error{"a line to reshape into a block has a multiple of 4 modules, at least 8, not " +
                  std::to_string(length)};
+  }
+  // The floor (length + 4 by 8) and the line, counted before any cell is: a length near the
+  // largest int would overflow the floor's side.
+  if (const int64_t modules = (int64_t(length) + 4) * 8 + length;
+      modules > int64_t(world::kMaxModules)) {
+    return Error{
+        fmt::format("a line of {} modules stands on a floor of {} modules: {} in all, more "
+                    "than the {} a world may hold",
+                    length, (int64_t(length) + 4) * 8, modules, world::kMaxModules)};
   }
   const int width = length / 4;
   const int floorX = length + 4;

@@ -67,6 +67,12 @@ TEST(ActuatorDesign, RefusesTextThatIsNotJson) {
   EXPECT_NE(refusal("{ \"format\": ").find("bad.json: not JSON"), std::string::npos);
 }
 
+// nlohmann takes a NUL byte for the end of its input: what follows would go unread.
+TEST(ActuatorDesign, RefusesANulByteNamingItsLine) {
+  EXPECT_EQ(refusal("{\n}\n" + std::string(1, '\0') + "junk"),
+            "bad.json:3: a NUL byte, which no JSON text holds");
+}
+
 TEST(ActuatorDesign, RefusesUnknownKeys) {
   EXPECT_EQ(refusal(editedLatch("\"summary\"", "\"colour\": 1, \"summary\"")),
             "bad.json: unknown key \"colour\" (a design holds format, version, name, model, "

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "command_line.h"
 
@@ -112,6 +113,11 @@ TEST_F(BadInput, SizesBeyondTheLimitsAreRefusedUpFront) {
           "random scene: 300000000 modules; a world holds at most 200000000", path("r.json"));
   refused("generate reshape pyramid --side 20000 -o " + path("p.json"),
           "is more modules than a world holds", path("p.json"));
+  // Counted before the floor's side is: 2147483644 + 4 overflowed into "at least 2 by 2".
+  refused("generate reshape line --length 2147483644 -o " + path("l.json"),
+          "a line of 2147483644 modules stands on a floor of 17179869184 modules: 19327352828 in "
+          "all, more than the 200000000 a world may hold",
+          path("l.json"));
   // A device is no scene file: it would be read until memory runs out.
   refused("info /dev/zero", "");
   std::filesystem::create_symlink("/dev/zero", path("zero.xml"));
@@ -171,6 +177,26 @@ TEST_F(BadInput, AnOutputThatWouldOverwriteAnInputOrAnotherOutputIsRefused) {
   refused("reach " + scene + " --goal 0,0,2 --png " + path("p.png") + " --svg " + path("./p.png"),
           "--png and --svg both name", path("p.png"));
   EXPECT_EQ(readText(scene), before);
+}
+
+// CLI11's own checks printed their range up to the largest double (309 digits), and sscanf wrapped
+// a frame size beyond int into another number.
+TEST_F(BadInput, NumbersOutOfRangeAreNamedInOneShortSentence) {
+  refused("generate random --count 0 -o " + path("r.json"),
+          "--count: must be an integer >= 1, got 0", path("r.json"));
+  refused("generate random --height 0 -o " + path("r.json"),
+          "--height: must be an integer >= 1, got 0", path("r.json"));
+  refused("generate random --count 1.5 -o " + path("r.json"),
+          "--count: must be an integer >= 1, got 1.5", path("r.json"));
+  refused("reach " + box() + " --goal 1,1,2 --max-size -1 --png " + path("m.png"),
+          "--max-size: must be an integer >= 0, got -1", path("m.png"));
+  refused("video " + box() + " --size 99999999999x180 -o " + path("v.gif"),
+          "--size 99999999999x180: write WIDTHxHEIGHT in pixels", path("v.gif"));
+  for (const std::string& command :
+       std::vector<std::string>{"generate random --count 0", "generate random --height 0",
+                                "reach " + box() + " --goal 1,1,2 --max-size -1"}) {
+    EXPECT_LT(datomsim(command).output.size(), 200u) << command;
+  }
 }
 
 TEST_F(BadInput, CommandLineMistakesExitOneAndAnUnknownSubcommandIsNamed) {

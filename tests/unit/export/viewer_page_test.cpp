@@ -149,6 +149,9 @@ TEST(Overlay, AcceptsTheReachDocumentAndRefusesMalformedOnes) {
   ASSERT_TRUE(ok.ok()) << ok.error();
   EXPECT_EQ(checkOverlay("[1]", "r.json").error(), "r.json: a distance map must be an object");
   EXPECT_EQ(checkOverlay("{", "r.json").error(), "r.json: invalid JSON");
+  // nlohmann takes a NUL byte for the end of its input: what follows would go unread.
+  EXPECT_EQ(checkOverlay("{}\n" + std::string(1, '\0') + "junk", "r.json").error(),
+            "r.json:2: a NUL byte, which no JSON text holds");
   EXPECT_EQ(checkOverlay(R"({"distances":[[1,2,3]]})", "r.json").error(),
             "r.json: distances[0] is [1,2,3], not [x,y,z,d]");
   EXPECT_EQ(checkOverlay(R"({"path":[[1,2,3],[1,2]]})", "r.json").error(),

@@ -44,9 +44,12 @@ world::ModuleKind kindOf(const std::optional<std::string>& module, world::Module
 // A scene in memory: the modules and what the file formats carry besides them.
 class Scene {
  public:
-  explicit Scene(io::Scene scene) : scene_(std::move(scene)) {}
+  explicit Scene(io::Scene scene, std::string source = {})
+      : scene_(std::move(scene)), source_(std::move(source)) {}
 
   const io::Scene& scene() const { return scene_; }
+  // The file the scene was read from, or empty: outputs never overwrite it.
+  const std::string& source() const { return source_; }
   std::string module() const { return std::string(world::toString(scene_.moduleKind)); }
   void setModule(const std::string& module) {
     scene_.moduleKind = kindOf(module, scene_.moduleKind);
@@ -167,6 +170,7 @@ class Scene {
 
  private:
   io::Scene scene_;
+  std::string source_;
 };
 
 // A generated scene: its modules latched to their neighbours, and its name.

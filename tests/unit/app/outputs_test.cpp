@@ -37,6 +37,11 @@ class Outputs : public CommandLine {
     return file;
   }
   std::string reachOptions() { return " --goal 6,5,2 --start 0,0,2"; }
+  // A viewer script of its own: the build may have none.
+  std::string viewerScript() {
+    writeText(path("viewer.js"), "// a viewer\n");
+    return " --viewer-js " + path("viewer.js");
+  }
 };
 
 // --- outputs over inputs ---
@@ -61,7 +66,7 @@ TEST_F(Outputs, ViewRefusesToWriteItsPageOverTheReachMapItShows) {
   const std::string map = path("r.json");
   ASSERT_EQ(datomsim("reach " + scene + reachOptions() + " --out " + map).status, 0);
   const std::string before = readText(map);
-  const Outcome outcome = datomsim("view " + scene + " --reach " + map + " -o " + map);
+  const Outcome outcome = datomsim("view " + scene + " --reach " + map + " -o " + map + viewerScript());
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_NE(outcome.output.find("would overwrite the --reach it reads"), std::string::npos)
       << outcome.output;
@@ -213,7 +218,8 @@ TEST_F(Outputs, APictureTooWideIsRefusedBeforeItIsDrawn) {
 TEST_F(Outputs, ViewRefusesADeviceAsAnyOfItsInputs) {
   const std::string scene = arch(1);
   for (const std::string& arguments :
-       {std::string("/dev/zero"), scene + " --reach /dev/zero", scene + " --viewer-js /dev/zero"}) {
+       {"/dev/zero" + viewerScript(), scene + " --reach /dev/zero" + viewerScript(),
+        scene + " --viewer-js /dev/zero"}) {
     const Outcome outcome = shell("timeout 60 " + std::string(DATOMSIM_BINARY) + " view " +
                                   arguments + " -o " + path("v.html") + " 2>&1");
     EXPECT_EQ(outcome.status, 1) << arguments << "\n" << outcome.output;

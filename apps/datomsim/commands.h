@@ -25,8 +25,8 @@ namespace datomsim::app {
 
 // The services the subcommands are written with, by their own names.
 using frontend::check;
-using frontend::CommandFiles;
 using frontend::CheckFailed;
+using frontend::CommandFiles;
 using frontend::declareGridForVisibleSim;
 using frontend::gridExtent;
 using frontend::NamedPath;

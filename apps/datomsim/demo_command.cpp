@@ -85,11 +85,13 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
                       result.holeHeight, geometry::toString(scene::kPaperGoal),
                       geometry::toString(scene::kPaperStart));
       // The mobile is not among the fixed modules.
-      writePictures(result.fixedWorld, true, result.distances, result.path, title,
-                    {.png = inFolder(name + "-distances.png"), .svg = inFolder(name + "-distances.svg")},
-                    files, reporter);
+      writePictures(
+          result.fixedWorld, true, result.distances, result.path, title,
+          {.png = inFolder(name + "-distances.png"), .svg = inFolder(name + "-distances.svg")},
+          files, reporter);
       files.write(inFolder(name + "-trace.jsonl"), result.run.trace);
-      files.write(inFolder(name + "-run.json"), frontend::runJson(experiment::kPaperProgram, result.run));
+      files.write(inFolder(name + "-run.json"),
+                  frontend::runJson(experiment::kPaperProgram, result.run));
       if (bundle.ok()) {
         const exporting::ViewerPage page = {
             title, result.run.trace,

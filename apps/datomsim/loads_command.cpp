@@ -47,8 +47,8 @@ void addLoadsCommand(CLI::App& app, const Reporter& reporter) {
     frontend::LoadsArguments& loads = args->loads;
     std::vector<NamedPath> outputs = {{"--out", loads.out}};
     frontend::addLoadPictureOutputs(loads, outputs);
-    frontend::refuseMisnamedPictures(loads.png, loads.svg);
     CommandFiles files({{"scene", loads.scene}}, outputs);
+    frontend::refuseMisnamedPictures(loads.png, loads.svg);
     loads.parameters.gravity = frontend::parseVector("--gravity", args->gravity);
     loads.method = args->solver == "direct"      ? mechanics::SolverMethod::kDirect
                    : args->solver == "iterative" ? mechanics::SolverMethod::kIterative

@@ -85,8 +85,8 @@ void addReach(CLI::App& app, const Reporter& reporter) {
     const PictureRequest& pictures = args->pictures;
     std::vector<NamedPath> outputs = {{"--out", args->out}};
     frontend::addPictureOutputs(pictures, outputs);
-    frontend::refuseMisnamedPictures(pictures.png, pictures.svg);
     CommandFiles files({{"scene", args->scene}}, outputs);
+    frontend::refuseMisnamedPictures(pictures.png, pictures.svg);
     const geometry::Cell goal = parseCell("--goal", args->goal);
     const std::optional<geometry::Cell> start =
         args->start.empty() ? std::nullopt : std::optional(parseCell("--start", args->start));
@@ -149,7 +149,8 @@ void addMoves(CLI::App& app, const Reporter& reporter) {
     }
     const motion::RuleTable table;
     const auto moves = motion::evaluateAll(scene.world, table, where, model.datom);
-    files.write("--out", asTable ? frontend::movesTable(at, moves) : frontend::movesJson(at, moves));
+    files.write("--out",
+                asTable ? frontend::movesTable(at, moves) : frontend::movesJson(at, moves));
     files.commit(reporter);
   });
 }

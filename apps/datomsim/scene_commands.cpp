@@ -98,12 +98,11 @@ void writeGenerated(world::World world, const std::string& name, const GenerateA
   if (!args.targetBox.empty()) scene.targets.push_back(boxTarget(args));
   declareGridForVisibleSim(scene, args.out, reporter);
   files.write("--out", [&](std::FILE* file) { return io::writeScene(scene, args.out, file); });
-  files.describe(
-      "--out",
-      fmt::format("{} modules{}", scene.world.size(),
-                  scene.targets.empty() ? ""
-                                        : fmt::format(", {} target{}", scene.targets.size(),
-                                                      scene.targets.size() == 1 ? "" : "s")));
+  files.describe("--out", fmt::format("{} modules{}", scene.world.size(),
+                                      scene.targets.empty()
+                                          ? ""
+                                          : fmt::format(", {} target{}", scene.targets.size(),
+                                                        scene.targets.size() == 1 ? "" : "s")));
   files.commit(reporter);
 }
 

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "frontend/output_file.h"
 #include "frontend/usage_error.h"
 #include "frontend/visiblesim_grid.h"
 #include "geometry/cell.h"
@@ -154,10 +155,16 @@ class Scene {
   }
 
   void save(const std::filesystem::path& path) const {
+    frontend::unwrap(io::sceneFormatOf(path));
+    // Opened as the commands open their outputs (a device written into, a FIFO with no reader
+    // refused); the scene's own file may be saved over.
+    frontend::CommandFiles files({}, {{"path", path.string()}});
     io::Scene written = scene_;
+    const frontend::Reporter quiet(/*quiet=*/true);
     // Python says nothing on standard error: the grid is in the file, for Python to read.
-    frontend::declareGridForVisibleSim(written, path.string(), frontend::Reporter(/*quiet=*/true));
-    frontend::check(io::writeScene(written, path));
+    frontend::declareGridForVisibleSim(written, path.string(), quiet);
+    files.write("path", [&](std::FILE* file) { return io::writeScene(written, path, file); });
+    files.commit(quiet);
   }
 
   Scene copy() const { return *this; }

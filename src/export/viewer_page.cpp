@@ -163,9 +163,10 @@ Result<std::string> readFile(const std::filesystem::path& path) {
     return Error{fmt::format("{}: not a regular file; a device has no end to read up to", name)};
   }
   const auto tooLarge = [&] {
-    return Error{fmt::format("{}: more than the {} MiB a file shown in the viewer may hold "
-                             "(docs/limits.md)",
-                             name, kMaxPageInputBytes >> 20)};
+    return Error{
+        fmt::format("{}: more than the {} MiB a file shown in the viewer may hold "
+                    "(docs/limits.md)",
+                    name, kMaxPageInputBytes >> 20)};
   };
   if (regular && std::filesystem::file_size(path, error) > kMaxPageInputBytes) return tooLarge();
   std::ifstream in(path, std::ios::binary);

@@ -50,11 +50,11 @@ void writePictures(const world::World& world, bool mobileTakenOut, const motion:
   if (Status fits = render::checkPictureSide(layout.width, layout.height); !fits) {
     const std::string names =
         request.png + (request.png.empty() || request.svg.empty() ? "" : ", ") + request.svg;
-    throw UsageError(fmt::format(
-        "{}: {}; {}", names, fits.error(),
-        // 2 px per cell: the smallest scale (render/distance_map.h).
-        layout.pixelsPerCell > 2 ? "lower --scale or --max-size"
-                                 : "the scene is too wide to draw even at 2 px per cell"));
+    throw UsageError(fmt::format("{}: {}; {}", names, fits.error(),
+                                 // 2 px per cell: the smallest scale (render/distance_map.h).
+                                 layout.pixelsPerCell > 2
+                                     ? "lower --scale or --max-size"
+                                     : "the scene is too wide to draw even at 2 px per cell"));
   }
   const std::string size = fmt::format("{} x {} px", layout.width, layout.height);
   if (!request.png.empty()) {

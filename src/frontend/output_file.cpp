@@ -10,8 +10,8 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <stdexcept>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 
 #include "frontend/usage_error.h"
@@ -24,8 +24,8 @@ struct CommandFiles::Output {
   enum class Kind { kStandardOutput, kFile, kStream };
   std::string option, path;  // as given
   Kind kind = Kind::kFile;
-  fs::path target;   // kFile: the file the partial file replaces (a symlink followed)
-  fs::path partial;  // kFile: the hidden file written meanwhile
+  fs::path target;            // kFile: the file the partial file replaces (a symlink followed)
+  fs::path partial;           // kFile: the hidden file written meanwhile
   std::FILE* file = nullptr;  // kFile: the partial file, open
   int fd = -1;                // kStream: the device or FIFO, open
   std::string held;           // kStandardOutput, kStream: what commit() writes
@@ -117,15 +117,15 @@ std::string systemError() {
 // Opens a device or a FIFO to write into. A FIFO is opened without waiting: with no reader the
 // open fails (ENXIO) rather than block, and the output is refused.
 int openStream(const CommandFiles::Output& output, bool fifo) {
-  const int fd = ::open(output.path.c_str(),
-                        O_WRONLY | O_NOCTTY | O_CLOEXEC | (fifo ? O_NONBLOCK : 0));
+  const int fd =
+      ::open(output.path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | (fifo ? O_NONBLOCK : 0));
   if (fd < 0 && fifo && errno == ENXIO) {
     throw UsageError(fmt::format("{} {}: a FIFO, and no process reads it; start its reader first",
                                  output.option, output.path));
   }
   if (fd < 0) {
-    throw UsageError(fmt::format("{} {}: cannot write: {}", output.option, output.path,
-                                 systemError()));
+    throw UsageError(
+        fmt::format("{} {}: cannot write: {}", output.option, output.path, systemError()));
   }
   // Written into once open, waiting for the reader as a pipe does.
   if (fifo) ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
@@ -155,8 +155,8 @@ void openPartial(CommandFiles::Output& output) {
   const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
   const auto where = statOf(directory.string());
   if (!where) {
-    throw UsageError(fmt::format("{} {}: no directory {}", output.option, output.path,
-                                 directory.string()));
+    throw UsageError(
+        fmt::format("{} {}: no directory {}", output.option, output.path, directory.string()));
   }
   if (!S_ISDIR(where->st_mode)) {
     throw UsageError(fmt::format("{} {}: {} is not a directory", output.option, output.path,
@@ -177,8 +177,8 @@ void openPartial(CommandFiles::Output& output) {
   output.file = ::fdopen(fd, "wb");
   if (output.file == nullptr) {
     ::close(fd);
-    throw UsageError(fmt::format("{} {}: cannot write: {}", output.option, output.path,
-                                 systemError()));
+    throw UsageError(
+        fmt::format("{} {}: cannot write: {}", output.option, output.path, systemError()));
   }
 }
 
@@ -227,44 +227,55 @@ CommandFiles::CommandFiles(const std::vector<NamedPath>& inputs,
                            const std::vector<NamedPath>& outputs, const fs::path& directory,
                            const std::string& directoryOption) {
   refuseClashes(inputs, outputs);
-  if (!directory.empty()) {
-    std::error_code error;
-    if (fs::exists(directory, error) && !fs::is_directory(directory, error)) {
-      throw UsageError(fmt::format("{} {}: is a file, not a directory", directoryOption,
-                                   directory.string()));
+  try {
+    makeDirectory(directory, directoryOption);
+    for (const NamedPath& named : outputs) {
+      auto output = std::make_unique<Output>();
+      output->option = named.option;
+      output->path = named.path;
+      outputs_.push_back(std::move(output));
+      open(*outputs_.back());
     }
-    // Made from the outermost missing one, so that a failure removes exactly those.
-    std::vector<fs::path> missing;
-    for (fs::path level = directory; !level.empty() && !fs::exists(level, error);
-         level = level.parent_path()) {
-      missing.insert(missing.begin(), level);
-      if (level == level.parent_path()) break;
-    }
-    for (const fs::path& level : missing) {
-      if (::mkdir(level.c_str(), 0777) != 0 && errno != EEXIST) {
-        throw UsageError(fmt::format("{} {}: cannot make {}: {}", directoryOption,
-                                     directory.string(), level.string(), systemError()));
-      }
-      madeDirectories_.push_back(level);
-    }
-  }
-  for (const NamedPath& named : outputs) {
-    auto output = std::make_unique<Output>();
-    output->option = named.option;
-    output->path = named.path;
-    // Kept before it is opened: a refusal then closes what the outputs before it opened.
-    outputs_.push_back(std::move(output));
-    open(*outputs_.back());
+  } catch (...) {
+    // No destructor runs for an object not made: undo here what the outputs before did.
+    undo();
+    throw;
   }
 }
 
-CommandFiles::~CommandFiles() {
-  outputs_.clear();  // closes and removes the partial files
-  if (!committed_) {
-    for (auto level = madeDirectories_.rbegin(); level != madeDirectories_.rend(); ++level) {
-      ::rmdir(level->c_str());
-    }
+void CommandFiles::makeDirectory(const fs::path& directory, const std::string& option) {
+  if (directory.empty()) return;
+  std::error_code error;
+  if (fs::exists(directory, error) && !fs::is_directory(directory, error)) {
+    throw UsageError(fmt::format("{} {}: is a file, not a directory", option, directory.string()));
   }
+  // Made from the outermost missing one, so that a failure removes exactly those.
+  std::vector<fs::path> missing;
+  for (fs::path level = directory; !level.empty() && !fs::exists(level, error);
+       level = level.parent_path()) {
+    missing.insert(missing.begin(), level);
+    if (level == level.parent_path()) break;
+  }
+  for (const fs::path& level : missing) {
+    if (::mkdir(level.c_str(), 0777) != 0 && errno != EEXIST) {
+      throw UsageError(fmt::format("{} {}: cannot make {}: {}", option, directory.string(),
+                                   level.string(), systemError()));
+    }
+    madeDirectories_.push_back(level);
+  }
+}
+
+void CommandFiles::undo() {
+  written_.clear();
+  outputs_.clear();  // closes and removes the partial files
+  for (auto level = madeDirectories_.rbegin(); level != madeDirectories_.rend(); ++level) {
+    ::rmdir(level->c_str());  // only when empty
+  }
+  madeDirectories_.clear();
+}
+
+CommandFiles::~CommandFiles() {
+  if (!committed_) undo();
 }
 
 CommandFiles::Output& CommandFiles::find(const std::string& name) {
@@ -281,12 +292,10 @@ CommandFiles::Output& CommandFiles::find(const std::string& name) {
   throw std::logic_error("CommandFiles: no output " + name);
 }
 
-void CommandFiles::write(const std::string& name,
-                         const std::function<Status(std::FILE*)>& write) {
+void CommandFiles::write(const std::string& name, const std::function<Status(std::FILE*)>& write) {
   Output& output = find(name);
-  const std::string shown = output.kind == Output::Kind::kStandardOutput
-                               ? std::string("standard output")
-                               : output.path;
+  const std::string shown =
+      output.kind == Output::Kind::kStandardOutput ? std::string("standard output") : output.path;
   if (output.kind == Output::Kind::kFile) {
     const Status status = write(output.file);
     if (!status) check(Error{fmt::format("cannot write {}: {}", shown, status.error())});
@@ -304,6 +313,7 @@ void CommandFiles::write(const std::string& name,
     std::free(bytes);
     if (!status) check(Error{fmt::format("cannot write {}: {}", shown, status.error())});
   }
+  if (!output.written) written_.push_back(&output);
   output.written = true;
 }
 
@@ -321,22 +331,22 @@ void CommandFiles::describe(const std::string& name, std::string holds) {
 void CommandFiles::commit(const Reporter& reporter) {
   // Every partial file complete on disk first (without fsync a crash soon after the rename can
   // leave an empty file under the output's name), then all renamed at once.
-  for (const auto& output : outputs_) {
-    if (output->kind != Output::Kind::kFile || !output->written) continue;
+  for (Output* output : written_) {
+    if (output->kind != Output::Kind::kFile) continue;
     const int closed = ::fsync(::fileno(output->file)) == 0 ? std::fclose(output->file) : -1;
-    if (closed != 0) throw UsageError(fmt::format("cannot write {}: {}", output->path, systemError()));
+    if (closed != 0)
+      throw UsageError(fmt::format("cannot write {}: {}", output->path, systemError()));
     output->file = nullptr;
   }
-  for (const auto& output : outputs_) {
-    if (output->kind != Output::Kind::kFile || !output->written) continue;
+  for (Output* output : written_) {
+    if (output->kind != Output::Kind::kFile) continue;
     if (std::rename(output->partial.c_str(), output->target.c_str()) != 0) {
       throw UsageError(fmt::format("cannot write {}: {}", output->path, systemError()));
     }
     output->partial.clear();
   }
   committed_ = true;
-  for (const auto& output : outputs_) {
-    if (!output->written) continue;
+  for (Output* output : written_) {
     if (output->kind == Output::Kind::kStandardOutput) {
       if (std::fwrite(output->held.data(), 1, output->held.size(), stdout) != output->held.size() ||
           std::fflush(stdout) != 0) {

@@ -64,7 +64,12 @@ class CommandFiles {
 
  private:
   Output& find(const std::string& name);
+  // Makes `directory` and its missing parents, kept in madeDirectories_.
+  void makeDirectory(const std::filesystem::path& directory, const std::string& option);
+  // Removes the partial files and the directories made.
+  void undo();
   std::vector<std::unique_ptr<Output>> outputs_;
+  std::vector<Output*> written_;  // in the order written, which commit() keeps
   std::vector<std::filesystem::path> madeDirectories_;  // outermost first
   bool committed_ = false;
 };

@@ -104,7 +104,8 @@ Result<std::string> renderDistanceMapPng(const DistanceMapPicture& picture) {
   const Result<Scene> scene = detail::prepare(picture);
   if (!scene) return Error{scene.error()};
   const DistanceMapLayout layout = detail::layoutOf(*scene, picture);
-  if (Status fits = checkPictureSide(layout.width, layout.height); !fits) return Error{fits.error()};
+  if (Status fits = checkPictureSide(layout.width, layout.height); !fits)
+    return Error{fits.error()};
   // RGB without alpha: the background is opaque white, and the files are smaller.
   const SurfacePtr surface(
       cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height));
@@ -122,7 +123,8 @@ Result<std::string> renderDistanceMapSvg(const DistanceMapPicture& picture) {
   const Result<Scene> scene = detail::prepare(picture);
   if (!scene) return Error{scene.error()};
   const DistanceMapLayout layout = detail::layoutOf(*scene, picture);
-  if (Status fits = checkPictureSide(layout.width, layout.height); !fits) return Error{fits.error()};
+  if (Status fits = checkPictureSide(layout.width, layout.height); !fits)
+    return Error{fits.error()};
   std::string bytes;
   detail::SvgCellPainter painter;
   {

@@ -29,11 +29,10 @@ class Outputs : public CommandLine {
   // Two modules a million cells apart: a picture of them is millions of pixels wide.
   std::string farApart() {
     const std::string file = path("far.json");
-    writeText(file,
-              R"({"format":"datomsim-scene","version":1,"name":"far","grid":null,)"
-              R"("blockSize":[10,10,10],"modules":[)"
-              R"({"id":1,"cell":[0,0,0],"orientation":0,"color":[128,128,128]},)"
-              R"({"id":2,"cell":[1000000,0,0],"orientation":0,"color":[128,128,128]}]})");
+    writeText(file, R"({"format":"datomsim-scene","version":1,"name":"far","grid":null,)"
+                    R"("blockSize":[10,10,10],"modules":[)"
+                    R"({"id":1,"cell":[0,0,0],"orientation":0,"color":[128,128,128]},)"
+                    R"({"id":2,"cell":[1000000,0,0],"orientation":0,"color":[128,128,128]}]})");
     return file;
   }
   std::string reachOptions() { return " --goal 6,5,2 --start 0,0,2"; }
@@ -66,7 +65,8 @@ TEST_F(Outputs, ViewRefusesToWriteItsPageOverTheReachMapItShows) {
   const std::string map = path("r.json");
   ASSERT_EQ(datomsim("reach " + scene + reachOptions() + " --out " + map).status, 0);
   const std::string before = readText(map);
-  const Outcome outcome = datomsim("view " + scene + " --reach " + map + " -o " + map + viewerScript());
+  const Outcome outcome =
+      datomsim("view " + scene + " --reach " + map + " -o " + map + viewerScript());
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_NE(outcome.output.find("would overwrite the --reach it reads"), std::string::npos)
       << outcome.output;
@@ -108,9 +108,8 @@ TEST_F(Outputs, AnOutputThroughASymlinkToADeviceIsWrittenIntoNotReplaced) {
 TEST_F(Outputs, AnOutputOnAFifoNobodyReadsIsRefusedWithoutWaiting) {
   const std::string fifo = path("fifo");
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  const Outcome outcome =
-      shell("timeout 60 " + std::string(DATOMSIM_BINARY) + " reach " + arch(1) + reachOptions() +
-            " --out " + fifo + " 2>&1");
+  const Outcome outcome = shell("timeout 60 " + std::string(DATOMSIM_BINARY) + " reach " + arch(1) +
+                                reachOptions() + " --out " + fifo + " 2>&1");
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_NE(outcome.output.find("no process reads it"), std::string::npos) << outcome.output;
   EXPECT_TRUE(fs::is_fifo(fifo));
@@ -155,8 +154,8 @@ TEST_F(Outputs, RunWhoseOutIsADirectoryFailsBeforeRunningAndWritesNoTrace) {
 TEST_F(Outputs, ReachWhoseSvgIsADirectoryLeavesItsPngAsItWas) {
   fs::create_directories(path("d.svg"));
   writeText(path("o.png"), "old");
-  const Outcome outcome = datomsim("reach " + arch(1) + reachOptions() + " --png " +
-                                   path("o.png") + " --svg " + path("d.svg"));
+  const Outcome outcome = datomsim("reach " + arch(1) + reachOptions() + " --png " + path("o.png") +
+                                   " --svg " + path("d.svg"));
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_EQ(readText(path("o.png")), "old");
 }
@@ -188,8 +187,8 @@ TEST_F(Outputs, AnUnwritableDirectoryIsRefusedBeforeAnythingIsWritten) {
   const std::string dir = path("locked");
   fs::create_directories(dir);
   fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
-  const Outcome outcome = datomsim("reach " + arch(1) + reachOptions() + " --png " +
-                                   path("o.png") + " --out " + dir + "/r.json");
+  const Outcome outcome = datomsim("reach " + arch(1) + reachOptions() + " --png " + path("o.png") +
+                                   " --out " + dir + "/r.json");
   fs::permissions(dir, fs::perms::owner_all);
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_FALSE(fs::exists(path("o.png")));
@@ -232,9 +231,7 @@ TEST_F(Outputs, ViewRefusesADeviceAsAnyOfItsInputs) {
 
 TEST_F(Outputs, ViewRefusesAnInputLargerThanItsBoundWithoutReadingIt) {
   const std::string big = path("big.js");
-  {
-    std::ofstream(big) << "x";
-  }
+  { std::ofstream(big) << "x"; }
   fs::resize_file(big, (size_t{512} << 20) + 1);  // sparse: nothing is written
   const Outcome outcome = datomsim("view " + arch(1) + " --viewer-js " + big);
   EXPECT_EQ(outcome.status, 1) << outcome.output;

@@ -184,7 +184,9 @@ void openPartial(CommandFiles::Output& output) {
 
 void open(CommandFiles::Output& output) {
   using Kind = CommandFiles::Output::Kind;
-  if (isStandardOutput(output.path)) {
+  // Standard output's own file too (/dev/stdout redirected to a file, with >> say), written as
+  // standard output: a new file renamed onto it would drop what the shell set up.
+  if (writesStandardOutput(output.path)) {
     output.kind = Kind::kStandardOutput;
     return;
   }

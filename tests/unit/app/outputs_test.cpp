@@ -131,6 +131,17 @@ TEST_F(Outputs, AnOutputOnAFifoIsWrittenIntoWhenSomeoneReads) {
   EXPECT_TRUE(fs::is_fifo(fifo));
 }
 
+TEST_F(Outputs, AnOutputNamingTheFileStandardOutputGoesToIsWrittenAsStandardOutput) {
+  // Appended, as the shell opened it: not replaced by a new file of the JSON alone.
+  const std::string log = path("log.txt");
+  writeText(log, "old\n");
+  const Outcome outcome = shell(std::string(DATOMSIM_BINARY) + " reach " + arch(1) +
+                                reachOptions() + " --out /dev/stdout >> " + log);
+  EXPECT_EQ(outcome.status, 0) << outcome.output;
+  const std::string text = readText(log);
+  EXPECT_EQ(text.rfind("old\n{\"goal\"", 0), 0u) << text.substr(0, 100);
+}
+
 TEST_F(Outputs, ADirectoryAsAnOutputIsRefused) {
   const Outcome outcome = datomsim("reach " + arch(1) + reachOptions() + " --out " + path(""));
   EXPECT_EQ(outcome.status, 1) << outcome.output;
@@ -209,6 +220,19 @@ TEST_F(Outputs, APictureTooWideIsRefusedBeforeItIsDrawn) {
         << outcome.output;
     EXPECT_FALSE(fs::exists(path("f.svg")));
     EXPECT_FALSE(fs::exists(path("f.png")));
+  }
+}
+
+TEST_F(Outputs, ASafetyMapTooWideIsRefusedBeforeItIsDrawn) {
+  const std::string scene = farApart();
+  for (const std::string& picture : {path("l.svg"), path("l.png")}) {
+    const std::string option = picture.ends_with(".svg") ? " --svg " : " --png ";
+    const Outcome outcome = datomsim("loads " + scene + option + picture);
+    EXPECT_EQ(outcome.status, 1) << outcome.output;
+    EXPECT_NE(outcome.output.find("more than the 32767 pixels a picture may have on a side"),
+              std::string::npos)
+        << outcome.output;
+    EXPECT_FALSE(fs::exists(picture));
   }
 }
 

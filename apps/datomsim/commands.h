@@ -26,6 +26,7 @@ namespace datomsim::app {
 // The services the subcommands are written with, by their own names.
 using frontend::check;
 using frontend::CheckFailed;
+using frontend::CommandFiles;
 using frontend::declareGridForVisibleSim;
 using frontend::gridExtent;
 using frontend::NamedPath;
@@ -33,7 +34,6 @@ using frontend::PictureRequest;
 using frontend::reachOnScene;
 using frontend::ReachOutput;
 using frontend::rebuilt;
-using frontend::refuseClashes;
 using frontend::Reporter;
 using frontend::ReshapeArguments;
 using frontend::reshapeCase;
@@ -41,7 +41,6 @@ using frontend::RunArguments;
 using frontend::runOnScene;
 using frontend::RunOutput;
 using frontend::unwrap;
-using frontend::writeOutput;
 using frontend::writePictures;
 
 // Each subcommand's callback reports through `reporter`, which must outlive the command line;
@@ -79,7 +78,7 @@ void addCompletionCommand(CLI::App& app);
 // test CommandLine.EverySubcommandsHelpEndsWithAnExampleThatRuns runs each).
 void addExample(CLI::App& command, const std::string& arguments);
 
-// The --out option whose value writeOutput takes.
+// The --out option: a file, or standard output when it is "-" or not given (CommandFiles).
 void addOutputOption(CLI::App& command, std::string& out);
 
 }  // namespace datomsim::app

@@ -87,9 +87,17 @@ void addCompareCommand(CLI::App& app, const Reporter& reporter) {
   command->callback([args, &reporter] {
     namespace fs = std::filesystem;
     const fs::path dir = args->dir;
-    if (fs::exists(dir) && !fs::is_directory(dir)) {
-      throw UsageError(fmt::format("--out-dir {}: is a file, not a directory", args->dir));
+    const std::string datomFile = (dir / "datom-reach.json").string();
+    const std::string catomFile = (dir / "catom3d-reach.json").string();
+    const std::string png = (dir / "compare.png").string();
+    const std::string summaryFile = (dir / "compare.json").string();
+    // Every result checked (and the directory made) before the scene is read; all written at
+    // the end, or none.
+    std::vector<NamedPath> outputs;
+    for (const std::string& file : {datomFile, catomFile, png, summaryFile}) {
+      outputs.push_back({"--out-dir", file});
     }
+    CommandFiles files({{"scene", args->scene}}, outputs, dir, "--out-dir");
     const Cell goal = parseCell("--goal", args->goal);
     const std::optional<Cell> start =
         args->start.empty() ? std::nullopt : std::optional(parseCell("--start", args->start));
@@ -146,17 +154,10 @@ void addCompareCommand(CLI::App& app, const Reporter& reporter) {
       ++(entered ? cutOff : solid ? needsSolid : needsEmptied);
     }
 
-    fs::create_directories(dir);
-    const std::string datomFile = (dir / "datom-reach.json").string();
-    const std::string catomFile = (dir / "catom3d-reach.json").string();
     for (const auto& [side, file] : {std::pair{&datom, datomFile}, std::pair{&catom, catomFile}}) {
-      writeOutput(
-          file,
-          [&](std::FILE* out) {
-            return frontend::writeReachJson(side->reached->map, side->reached->path, side->model,
-                                            out);
-          },
-          reporter);
+      files.write(file, [&](std::FILE* out) {
+        return frontend::writeReachJson(side->reached->map, side->reached->path, side->model, out);
+      });
     }
 
     std::vector<render::DistanceMapPicture> pictures;
@@ -174,9 +175,8 @@ void addCompareCommand(CLI::App& app, const Reporter& reporter) {
       if (args->scale > 0) picture.pixelsPerCell = args->scale;
       pictures.push_back(std::move(picture));
     }
-    const std::string png = (dir / "compare.png").string();
-    check(render::writeSideBySidePng(pictures, png));
-    reporter.reportWritten(png, "the two maps side by side");
+    files.write(png, unwrap(render::renderSideBySidePng(pictures)));
+    files.describe(png, "the two maps side by side");
 
     nlohmann::ordered_json summary;
     summary["scene"] = args->scene;
@@ -201,7 +201,8 @@ void addCompareCommand(CLI::App& app, const Reporter& reporter) {
                                  {"rolls_in_need_a_solid_cell", needsSolid},
                                  {"rolls_in_need_a_cell_holding_a_module", needsEmptied},
                                  {"rolls_in_start_where_the_catom_never_is", cutOff}};
-    writeOutput((dir / "compare.json").string(), summary.dump(2) + "\n", reporter);
+    files.write(summaryFile, summary.dump(2) + "\n");
+    files.commit(reporter);
 
     // For a person: the table docs/catom3d.md gives.
     std::string table = fmt::format("{:<38} {:>8} {:>8}\n", "", "datom", "catom3d");

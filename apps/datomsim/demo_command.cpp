@@ -44,9 +44,7 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
   addExample(*command, "demo -o demo-output");
   command->callback([args, &reporter] {
     const std::filesystem::path folder = args->out;
-    std::error_code error;
-    std::filesystem::create_directories(folder, error);
-    if (error) throw UsageError("cannot create " + args->out + ": " + error.message());
+    const auto inFolder = [&](const std::string& name) { return (folder / name).string(); };
 
     // The viewer's script, if it was built (docs/viewer.md); the rest of the demo does without.
     const auto directory = exporting::executableDirectory();
@@ -56,6 +54,22 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
 
     const motion::RuleTable table;
     const experiment::PaperExperiment experiment = unwrap(experiment::runPaperExperiment(table));
+    // Every file but the videos checked (and the folder made) before any is written, and all
+    // written at the end of the runs, or none; the videos after them.
+    std::vector<NamedPath> outputs;
+    for (const experiment::PaperScene& result : experiment.scenes) {
+      const std::string name = fmt::format("arch-hole{}", result.holeHeight);
+      for (const char* suffix : {"-distances.png", "-distances.svg", "-trace.jsonl", "-run.json"}) {
+        outputs.push_back({"-o", inFolder(name + suffix)});
+      }
+      if (bundle.ok()) outputs.push_back({"-o", inFolder(name + "-viewer.html")});
+    }
+    for (const char* name : {"arch-build-trace.jsonl", "arch-build-run.json"}) {
+      outputs.push_back({"-o", inFolder(name)});
+    }
+    if (bundle.ok()) outputs.push_back({"-o", inFolder("arch-build-viewer.html")});
+    outputs.push_back({"-o", inFolder("summary.json")});
+    CommandFiles files({}, outputs, folder, "-o");
     nlohmann::ordered_json summary;
     summary["goal"] = cellsJson({scene::kPaperGoal})[0];
     summary["start"] = cellsJson({scene::kPaperStart})[0];
@@ -71,19 +85,18 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
                       result.holeHeight, geometry::toString(scene::kPaperGoal),
                       geometry::toString(scene::kPaperStart));
       // The mobile is not among the fixed modules.
-      writePictures(result.fixedWorld, true, result.distances, result.path, title,
-                    {.png = (folder / (name + "-distances.png")).string(),
-                     .svg = (folder / (name + "-distances.svg")).string()},
-                    reporter);
-      writeOutput((folder / (name + "-trace.jsonl")).string(), result.run.trace, reporter);
-      writeOutput((folder / (name + "-run.json")).string(),
-                  frontend::runJson(experiment::kPaperProgram, result.run), reporter);
+      writePictures(
+          result.fixedWorld, true, result.distances, result.path, title,
+          {.png = inFolder(name + "-distances.png"), .svg = inFolder(name + "-distances.svg")},
+          files, reporter);
+      files.write(inFolder(name + "-trace.jsonl"), result.run.trace);
+      files.write(inFolder(name + "-run.json"),
+                  frontend::runJson(experiment::kPaperProgram, result.run));
       if (bundle.ok()) {
         const exporting::ViewerPage page = {
             title, result.run.trace,
             exporting::overlayJson(result.distances.sorted(), result.path, scene::kPaperGoal)};
-        check(exporting::writeViewerPage(folder / (name + "-viewer.html"), *bundle, page));
-        reporter.reportWritten((folder / (name + "-viewer.html")).string());
+        files.write(inFolder(name + "-viewer.html"), unwrap(exporting::viewerHtml(*bundle, page)));
         videos.emplace_back(folder / (name + "-run.mp4"), page);
       }
 
@@ -120,13 +133,11 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
     request.trace = false;
     const experiment::RunResult sequential =
         unwrap(experiment::runProgram(std::move(build.world), table, request));
-    writeOutput((folder / "arch-build-trace.jsonl").string(), built.trace, reporter);
-    writeOutput((folder / "arch-build-run.json").string(),
-                frontend::runJson(request.program, built), reporter);
+    files.write(inFolder("arch-build-trace.jsonl"), built.trace);
+    files.write(inFolder("arch-build-run.json"), frontend::runJson(request.program, built));
     if (bundle.ok()) {
-      check(exporting::writeViewerPage(folder / "arch-build-viewer.html", *bundle,
-                                       {request.description, built.trace, ""}));
-      reporter.reportWritten((folder / "arch-build-viewer.html").string());
+      files.write(inFolder("arch-build-viewer.html"),
+                  unwrap(exporting::viewerHtml(*bundle, {request.description, built.trace, ""})));
     }
     const double makespan = double(built.statistics.lastMotionEnd) / kSecond;
     const double baseline = double(sequential.statistics.lastMotionEnd) / kSecond;
@@ -138,7 +149,8 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
     arch["sequential_makespan_s"] = baseline;
     arch["speed_up"] = makespan > 0 ? baseline / makespan : 0.0;
     summary["arch_build"] = std::move(arch);
-    writeOutput((folder / "summary.json").string(), summary.dump(2) + "\n", reporter);
+    files.write(inFolder("summary.json"), summary.dump(2) + "\n");
+    files.commit(reporter);
 
     // Short videos of the paper's runs, small so that they are quick to draw: 640x360, 12 frames
     // a second, at most 15 s. Without Chromium or ffmpeg the demo says so and does without.

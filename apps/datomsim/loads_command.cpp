@@ -46,9 +46,8 @@ void addLoadsCommand(CLI::App& app, const Reporter& reporter) {
   command->callback([args, &reporter] {
     frontend::LoadsArguments& loads = args->loads;
     std::vector<NamedPath> outputs = {{"--out", loads.out}};
-    if (!loads.png.empty()) outputs.push_back({"--png", loads.png});
-    if (!loads.svg.empty()) outputs.push_back({"--svg", loads.svg});
-    refuseClashes({{"scene", loads.scene}}, outputs);
+    frontend::addLoadPictureOutputs(loads, outputs);
+    CommandFiles files({{"scene", loads.scene}}, outputs);
     frontend::refuseMisnamedPictures(loads.png, loads.svg);
     loads.parameters.gravity = frontend::parseVector("--gravity", args->gravity);
     loads.method = args->solver == "direct"      ? mechanics::SolverMethod::kDirect
@@ -59,10 +58,9 @@ void addLoadsCommand(CLI::App& app, const Reporter& reporter) {
     scene.world.latchAllNeighbours();
     const frontend::LoadsOutput output = frontend::loadsOnScene(scene.world, loads);
     // Everything is computed before anything is written.
-    frontend::writeLoadPictures(output, loads, loads.scene, reporter);
-    writeOutput(
-        loads.out, [&](std::FILE* file) { return frontend::writeLoadsJson(output, file); },
-        reporter);
+    frontend::writeLoadPictures(output, loads, loads.scene, files);
+    files.write("--out", [&](std::FILE* file) { return frontend::writeLoadsJson(output, file); });
+    files.commit(reporter);
     for (const std::string& line : frontend::loadsSummary(output)) reporter.note(line);
   });
 }

@@ -40,6 +40,7 @@ void addMeshCommand(CLI::App& app, const Reporter& reporter) {
   command->callback([args, &reporter] {
     // The output's format first: a wrong extension is the cheapest mistake to report.
     unwrap(exporting::meshFormatOf(args->out));
+    CommandFiles files({}, {{"-o", args->out}});
     if (!std::isfinite(args->radius) || args->radius <= 0) {
       throw UsageError(fmt::format("--radius must be a positive number, got {}", args->radius));
     }
@@ -68,12 +69,12 @@ void addMeshCommand(CLI::App& app, const Reporter& reporter) {
         piston < 0 ? "at rest" : fmt::format("piston {} compressed to {}", piston, fraction);
     const std::string comment =
         fmt::format("Datom, r = {}, t = {}, {}", args->radius, args->thickness, state);
-    check(exporting::writeMesh(mesh, args->out, comment));
+    files.write("-o", unwrap(exporting::meshBytes(mesh, args->out, comment)));
     const auto [low, high] = mesh.bounds();
-    reporter.reportWritten(
-        args->out,
-        fmt::format("{} parts, {} triangles, {:.4g} x {:.4g} x {:.4g}", mesh.groups.size(),
-                    mesh.triangleCount(), high.x - low.x, high.y - low.y, high.z - low.z));
+    files.describe(
+        "-o", fmt::format("{} parts, {} triangles, {:.4g} x {:.4g} x {:.4g}", mesh.groups.size(),
+                          mesh.triangleCount(), high.x - low.x, high.y - low.y, high.z - low.z));
+    files.commit(reporter);
   });
 }
 

@@ -83,11 +83,9 @@ void addReach(CLI::App& app, const Reporter& reporter) {
              "reach scenes/paper-arch-hole1.json --goal 6,5,2 --start 0,0,2 --png arch1.png");
   command->callback([args, &reporter] {
     const PictureRequest& pictures = args->pictures;
-    // Pictures are files (never standard output): only --out may be "-".
     std::vector<NamedPath> outputs = {{"--out", args->out}};
-    if (!pictures.png.empty()) outputs.push_back({"--png", pictures.png});
-    if (!pictures.svg.empty()) outputs.push_back({"--svg", pictures.svg});
-    refuseClashes({{"scene", args->scene}}, outputs);
+    frontend::addPictureOutputs(pictures, outputs);
+    CommandFiles files({{"scene", args->scene}}, outputs);
     frontend::refuseMisnamedPictures(pictures.png, pictures.svg);
     const geometry::Cell goal = parseCell("--goal", args->goal);
     const std::optional<geometry::Cell> start =
@@ -98,13 +96,11 @@ void addReach(CLI::App& app, const Reporter& reporter) {
     const std::string title = fmt::format("{}: distances to {} ({})", args->scene,
                                           geometry::toString(goal), describe(model));
     writePictures(reached.fixed, reached.mobileTakenOut, reached.map, reached.path, title, pictures,
-                  reporter);
-    writeOutput(
-        args->out,
-        [&](std::FILE* file) {
-          return frontend::writeReachJson(reached.map, reached.path, model, file);
-        },
-        reporter);
+                  files, reporter);
+    files.write("--out", [&](std::FILE* file) {
+      return frontend::writeReachJson(reached.map, reached.path, model, file);
+    });
+    files.commit(reporter);
   });
 }
 
@@ -131,7 +127,7 @@ void addMoves(CLI::App& app, const Reporter& reporter) {
   addOutputOption(*command, args->out);
   addExample(*command, "moves scenes/paper-arch-hole1.json --at 2,2,3");
   command->callback([args, &reporter] {
-    refuseClashes({{"scene", args->scene}}, {{"--out", args->out}});
+    CommandFiles files({{"scene", args->scene}}, {{"--out", args->out}});
     const geometry::Cell at = parseCell("--at", args->at);
     const io::Scene scene = unwrap(io::readScene(args->scene));
     if (!scene.world.isInside(at)) {
@@ -146,17 +142,16 @@ void addMoves(CLI::App& app, const Reporter& reporter) {
     if (model.kind == world::ModuleKind::kCatom3D) {
       const catom3d::RollTable table;
       const auto rolls = catom3d::evaluateAll(scene.world, table, where, model.rolling);
-      writeOutput(
-          args->out,
-          asTable ? frontend::rollsTable(at, rolls, model) : frontend::rollsJson(at, rolls, model),
-          reporter);
+      files.write("--out", asTable ? frontend::rollsTable(at, rolls, model)
+                                   : frontend::rollsJson(at, rolls, model));
+      files.commit(reporter);
       return;
     }
     const motion::RuleTable table;
     const auto moves = motion::evaluateAll(scene.world, table, where, model.datom);
-    writeOutput(args->out,
-                asTable ? frontend::movesTable(at, moves) : frontend::movesJson(at, moves),
-                reporter);
+    files.write("--out",
+                asTable ? frontend::movesTable(at, moves) : frontend::movesJson(at, moves));
+    files.commit(reporter);
   });
 }
 

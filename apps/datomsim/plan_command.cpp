@@ -38,14 +38,14 @@ void addPlanCommand(CLI::App& app, const Reporter& reporter) {
   addExample(*command, "plan scenes/reshape-heap.json --out plan.json");
   command->callback([args, &reporter] {
     const frontend::PlanArguments& given = args->plan;
-    refuseClashes({{"scene", given.scene}, {"--target", given.target}}, {{"--out", given.out}});
+    CommandFiles files({{"scene", given.scene}, {"--target", given.target}},
+                       {{"--out", given.out}});
     io::Scene scene = unwrap(io::readScene(given.scene));
     // Attachment and connectivity are on whatever is given: planOnScene sets them.
     const MotionChoice choice = args->module.modelFor(scene, {args->rules, "on", "on"});
     const frontend::PlanOutput output = frontend::planOnScene(std::move(scene), given, choice);
-    writeOutput(
-        given.out, [&](std::FILE* file) { return frontend::writePlanJson(output, file); },
-        reporter);
+    files.write("--out", [&](std::FILE* file) { return frontend::writePlanJson(output, file); });
+    files.commit(reporter);
     const planner::Plan& plan = output.plan;
     reporter.note(planner::summary(plan));
     // An infeasible case is written like a plan, to be looked at; then it fails.

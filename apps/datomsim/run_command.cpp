@@ -136,7 +136,7 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
   command->callback([args, command, added, &reporter] {
     std::vector<NamedPath> outputs = {{"--out", args->out}};
     if (!args->trace.empty()) outputs.push_back({"--trace", args->trace});
-    refuseClashes({{"scene", args->scene}, {"--target", args->target}}, outputs);
+    CommandFiles files({{"scene", args->scene}, {"--target", args->target}}, outputs);
     args->connectivityGiven = command->count("--connectivity") > 0;
     // Refused with gravity off by runOnScene, as Python's keywords are.
     for (const char* option : kLoadParameterOptions) {
@@ -148,11 +148,11 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
     refuseOtherKindsOptions(*command, kindFor(args->module, scene), {"--rules", "--attachment"});
     const RunOutput run = runOnScene(std::move(scene), args->scene, *args, added);
     // A failed run is written like a successful one, to be looked at and counted; then it fails.
-    if (!args->trace.empty()) writeOutput(args->trace, run.result.trace, reporter);
-    writeOutput(
-        args->out,
-        [&](std::FILE* file) { return frontend::writeRunJson(run.kind.name, run.result, file); },
-        reporter);
+    if (!args->trace.empty()) files.write("--trace", run.result.trace);
+    files.write("--out", [&](std::FILE* file) {
+      return frontend::writeRunJson(run.kind.name, run.result, file);
+    });
+    files.commit(reporter);
     if (args->stats) printStatistics(run.result.statistics, run.result.loadChecks);
     if (run.failure) throw UsageError(*run.failure);
   });

@@ -84,7 +84,9 @@ void writeGenerated(world::World world, const std::string& name, const GenerateA
                     const Reporter& reporter) {
   std::vector<NamedPath> inputs;
   for (const std::string& file : args.targetFiles) inputs.push_back({"--target", file});
-  refuseClashes(inputs, {{"--out", args.out}});
+  // The format first: a scene file's name says it.
+  unwrap(io::sceneFormatOf(args.out));
+  CommandFiles files(inputs, {{"--out", args.out}});
   io::Scene scene;
   scene.world = std::move(world);
   scene.name = name;
@@ -96,13 +98,13 @@ void writeGenerated(world::World world, const std::string& name, const GenerateA
   }
   if (!args.targetBox.empty()) scene.targets.push_back(boxTarget(args));
   declareGridForVisibleSim(scene, args.out, reporter);
-  check(io::writeScene(scene, args.out));
-  reporter.reportWritten(
-      args.out,
-      fmt::format("{} modules{}", scene.world.size(),
-                  scene.targets.empty() ? ""
-                                        : fmt::format(", {} target{}", scene.targets.size(),
-                                                      scene.targets.size() == 1 ? "" : "s")));
+  files.write("--out", [&](std::FILE* file) { return io::writeScene(scene, args.out, file); });
+  files.describe("--out", fmt::format("{} modules{}", scene.world.size(),
+                                      scene.targets.empty()
+                                          ? ""
+                                          : fmt::format(", {} target{}", scene.targets.size(),
+                                                        scene.targets.size() == 1 ? "" : "s")));
+  files.commit(reporter);
 }
 
 void addGenerate(CLI::App& app, const Reporter& reporter) {
@@ -221,15 +223,17 @@ void addConvert(CLI::App& app, const Reporter& reporter) {
       ->check(CLI::IsMember({"datom", "catom3d"}));
   addExample(*command, "convert scenes/paper-arch-hole1.json -o arch1.xml");
   command->callback([args, &reporter] {
-    refuseClashes({{"scene", args->in}}, {{"--out", args->out}});
+    unwrap(io::sceneFormatOf(args->out));
+    CommandFiles files({{"scene", args->in}}, {{"--out", args->out}});
     io::Scene scene = unwrap(io::readScene(args->in));
     if (!args->module.empty()) scene.moduleKind = *world::moduleKindNamed(args->module);
     declareGridForVisibleSim(scene, args->out, reporter);
-    check(io::writeScene(scene, args->out));
-    reporter.reportWritten(
-        args->out,
+    files.write("--out", [&](std::FILE* file) { return io::writeScene(scene, args->out, file); });
+    files.describe(
+        "--out",
         fmt::format("{} modules{}", scene.world.size(),
                     scene.moduleKind == world::ModuleKind::kCatom3D ? " (3D Catoms)" : ""));
+    files.commit(reporter);
   });
 }
 

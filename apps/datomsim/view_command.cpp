@@ -49,15 +49,18 @@ std::string bundleFor(const PageArguments& arguments) {
 }
 
 // The output's default: the input's name with `extension` added, so that a scene and its trace
-// (x.json, x.jsonl) never write the same file; refused when it would be the input itself.
-std::filesystem::path outputFor(const std::string& out, const std::filesystem::path& input,
-                                const std::string& extension) {
-  const std::filesystem::path path = out.empty() ? input.string() + extension : out;
-  std::error_code error;
-  if (std::filesystem::equivalent(path, input, error)) {
-    throw UsageError(fmt::format("{} would overwrite its input; choose another -o", path.string()));
-  }
-  return path;
+// (x.json, x.jsonl) never write the same file.
+std::string outputFor(const std::string& out, const std::string& input,
+                      const std::string& extension) {
+  return out.empty() ? input + extension : out;
+}
+
+// Every file the page reads, for the outputs to be checked against.
+std::vector<NamedPath> inputsOf(const PageArguments& page) {
+  std::vector<NamedPath> inputs = {{"input", page.input}};
+  if (!page.reach.empty()) inputs.push_back({"--reach", page.reach});
+  if (!page.viewerJs.empty()) inputs.push_back({"--viewer-js", page.viewerJs});
+  return inputs;
 }
 
 // "1280x720" -> {1280, 720}. Read with from_chars: sscanf's %d wraps a number beyond int, and the
@@ -112,10 +115,11 @@ void addViewCommand(CLI::App& app, const Reporter& reporter) {
                       "scene and its trace, x.json and x.jsonl, give two pages)");
   addExample(*command, "view scenes/walkers.json -o walkers.html");
   command->callback([args, &reporter] {
-    const exporting::ViewerPage page = pageOf(args->page);
-    const std::filesystem::path out = outputFor(args->out, args->page.input, ".html");
-    check(exporting::writeViewerPage(out, bundleFor(args->page), page));
-    reporter.reportWritten(out.string());
+    // The page is a file: "-" names one, as for video.
+    const std::string out = outputFor(args->out, args->page.input, ".html");
+    CommandFiles files(inputsOf(args->page), {{"-o", out == "-" ? "./-" : out}});
+    files.write("-o", unwrap(exporting::viewerHtml(bundleFor(args->page), pageOf(args->page))));
+    files.commit(reporter);
   });
 }
 
@@ -155,6 +159,8 @@ void addVideoCommand(CLI::App& app, const Reporter& reporter) {
   command->callback([args, &reporter] {
     video::VideoRequest request;
     request.out = outputFor(args->out, args->page.input, ".mp4");
+    // ffmpeg writes the video (to a partial file renamed at the end: video/recorder.h).
+    frontend::refuseClashes(inputsOf(args->page), {{"-o", request.out.string()}});
     unwrap(video::containerOf(request.out));  // before the page is made
     std::tie(request.width, request.height) = parseSize(args->size);
     request.fps = args->fps;

@@ -130,6 +130,12 @@ std::vector<std::pair<std::string, double*>> loadParameterKeywords(elastic::Load
           {"latch_moment", &p.latchMoment}};
 }
 
+// The file a scene was read from, when it was: no output may overwrite it.
+std::vector<frontend::NamedPath> inputsOf(const Scene& scene) {
+  if (scene.source().empty()) return {};
+  return {{"scene", scene.source()}};
+}
+
 // The JSON text of `loads --out`; the pictures asked for written as the command writes them.
 std::string loads(const Scene& scene, const py::dict& options) {
   frontend::LoadsArguments args;
@@ -188,11 +194,15 @@ std::string loads(const Scene& scene, const py::dict& options) {
   args.method = solver == "direct"      ? mechanics::SolverMethod::kDirect
                 : solver == "iterative" ? mechanics::SolverMethod::kIterative
                                         : mechanics::SolverMethod::kAutomatic;
+  std::vector<frontend::NamedPath> outputs;
+  frontend::addLoadPictureOutputs(args, outputs);
+  frontend::CommandFiles files(inputsOf(scene), outputs);
   // A scene describes its rest state: every pair of neighbours latched.
   world::World world = scene.scene().world;
   world.latchAllNeighbours();
   const frontend::LoadsOutput output = frontend::loadsOnScene(world, args);
-  frontend::writeLoadPictures(output, args, title, frontend::Reporter(true));
+  frontend::writeLoadPictures(output, args, title, files);
+  files.commit(frontend::Reporter(true));
   return frontend::loadsJson(output);
 }
 
@@ -201,6 +211,7 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
     const Scene& scene, const std::string& program, const py::dict& options) {
   frontend::RunArguments args;
   args.program = program;
+  std::optional<std::string> tracePath;
   const std::set<std::string> known = {
       "goal",      "start",       "rules",  "attachment", "connectivity", "seed",       "delay_ms",
       "jitter_ms", "max_motions", "target", "timeout",    "until",        "params",     "root",
@@ -276,7 +287,14 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
     if (name == "target") args.target = py::str(value).cast<std::string>();
     if (name == "timeout") args.timeoutS = value.cast<double>();
     if (name == "until") args.untilS = value.cast<double>();
-    if (name == "trace") args.wantTrace = value.cast<bool>();
+    if (name == "trace") {
+      // True: the trace's text returned; a path: the file to write it to.
+      if (py::isinstance<py::str>(value)) {
+        tracePath = value.cast<std::string>();
+        if (tracePath->empty()) throw UsageError("run: trace is an empty file name");
+      }
+      args.wantTrace = tracePath || value.cast<bool>();
+    }
     if (name == "module") args.module = value.cast<std::string>();
     if (name == "rolling") args.rolling = value.cast<std::string>();
     if (name == "params") {
@@ -289,9 +307,22 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
   const std::string sceneName = options.contains("scene_name")
                                     ? options["scene_name"].cast<std::string>()
                                     : scene.scene().name.value_or("a scene from Python");
+  // The trace file checked against the scene's file and the target before the run, as `run
+  // --trace` is.
+  std::optional<frontend::CommandFiles> files;
+  if (tracePath) {
+    std::vector<frontend::NamedPath> inputs = inputsOf(scene);
+    if (!args.target.empty()) inputs.push_back({"target", args.target});
+    files.emplace(inputs, std::vector<frontend::NamedPath>{{"trace", *tracePath}});
+  }
   frontend::RunOutput output = frontend::runOnScene(scene.scene(), sceneName, args);
   std::optional<std::string> trace;
-  if (args.wantTrace) trace = std::move(output.result.trace);
+  if (files) {
+    files->write("trace", output.result.trace);
+    files->commit(frontend::Reporter(true));
+  } else if (args.wantTrace) {
+    trace = std::move(output.result.trace);
+  }
   return {frontend::runJson(output.kind.name, output.result), std::move(trace), output.failure};
 }
 
@@ -343,7 +374,7 @@ PYBIND11_MODULE(_core, module) {
   module.def(
       "load_scene",
       [](const std::filesystem::path& path) {
-        return Scene(frontend::unwrap(io::readScene(path)));
+        return Scene(frontend::unwrap(io::readScene(path)), path.string());
       },
       py::arg("path"), "Read a .json or VisibleSim .xml scene file");
   module.def(

@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "frontend/output_file.h"
 #include "frontend/usage_error.h"
 #include "frontend/visiblesim_grid.h"
 #include "geometry/cell.h"
@@ -44,9 +45,12 @@ world::ModuleKind kindOf(const std::optional<std::string>& module, world::Module
 // A scene in memory: the modules and what the file formats carry besides them.
 class Scene {
  public:
-  explicit Scene(io::Scene scene) : scene_(std::move(scene)) {}
+  explicit Scene(io::Scene scene, std::string source = {})
+      : scene_(std::move(scene)), source_(std::move(source)) {}
 
   const io::Scene& scene() const { return scene_; }
+  // The file the scene was read from, or empty: outputs never overwrite it.
+  const std::string& source() const { return source_; }
   std::string module() const { return std::string(world::toString(scene_.moduleKind)); }
   void setModule(const std::string& module) {
     scene_.moduleKind = kindOf(module, scene_.moduleKind);
@@ -151,10 +155,16 @@ class Scene {
   }
 
   void save(const std::filesystem::path& path) const {
+    frontend::unwrap(io::sceneFormatOf(path));
+    // Opened as the commands open their outputs (a device written into, a FIFO with no reader
+    // refused); the scene's own file may be saved over.
+    frontend::CommandFiles files({}, {{"path", path.string()}});
     io::Scene written = scene_;
+    const frontend::Reporter quiet(/*quiet=*/true);
     // Python says nothing on standard error: the grid is in the file, for Python to read.
-    frontend::declareGridForVisibleSim(written, path.string(), frontend::Reporter(/*quiet=*/true));
-    frontend::check(io::writeScene(written, path));
+    frontend::declareGridForVisibleSim(written, path.string(), quiet);
+    files.write("path", [&](std::FILE* file) { return io::writeScene(written, path, file); });
+    files.commit(quiet);
   }
 
   Scene copy() const { return *this; }
@@ -167,6 +177,7 @@ class Scene {
 
  private:
   io::Scene scene_;
+  std::string source_;
 };
 
 // A generated scene: its modules latched to their neighbours, and its name.

@@ -206,15 +206,13 @@ def run(
     """
     if params is not None:
         options["params"] = dict(params)
-    options["trace"] = trace is not None and trace is not False
+    # A file is written by the core, as `run --trace` writes it: checked against the scene's file
+    # and the target before the run, whole or not at all.
+    path = os.fspath(trace) if isinstance(trace, (str, os.PathLike)) else None
+    options["trace"] = path if path is not None else (trace is not None and trace is not False)
     text, trace_text, failure = _core.run(scene, program, options)
     result = json.loads(text)
-    if isinstance(trace, (str, os.PathLike)):
-        path = os.fspath(trace)
-        partial = f"{path}.partial"
-        with open(partial, "w", encoding="utf-8") as file:
-            file.write(trace_text)
-        os.replace(partial, path)
+    if path is not None:
         result["trace"] = path
     elif trace is True:
         result["trace"] = trace_text

@@ -308,18 +308,25 @@ std::string glbBytes(const Mesh& mesh, const std::string& comment) {
   return out;
 }
 
-Status writeMesh(const Mesh& mesh, const std::filesystem::path& path, const std::string& comment) {
+Result<std::string> meshBytes(const Mesh& mesh, const std::filesystem::path& path,
+                              const std::string& comment) {
   const auto format = meshFormatOf(path);
   if (!format) return Error{format.error()};
   switch (*format) {
     case MeshFormat::kObj:
-      return writeFileAtomically(path, objText(mesh, comment));
+      return objText(mesh, comment);
     case MeshFormat::kStl:
-      return writeFileAtomically(path, stlBytes(mesh, comment));
+      return stlBytes(mesh, comment);
     case MeshFormat::kGlb:
-      return writeFileAtomically(path, glbBytes(mesh, comment));
+      return glbBytes(mesh, comment);
   }
   return Error{"unknown mesh format"};
+}
+
+Status writeMesh(const Mesh& mesh, const std::filesystem::path& path, const std::string& comment) {
+  const Result<std::string> bytes = meshBytes(mesh, path, comment);
+  if (!bytes) return Error{bytes.error()};
+  return writeFileAtomically(path, *bytes);
 }
 
 }  // namespace datomsim::exporting

@@ -55,8 +55,12 @@ std::string objText(const Mesh& mesh, const std::string& comment);
 std::string stlBytes(const Mesh& mesh, const std::string& comment);
 std::string glbBytes(const Mesh& mesh, const std::string& comment);
 
-// Writes the mesh in the format of the path's extension, atomically. `comment` goes into the
-// file's header (OBJ comment, STL header, glTF asset.extras).
+// The file's bytes in the format of `path`'s extension. `comment` goes into the file's header
+// (OBJ comment, STL header, glTF asset.extras).
+Result<std::string> meshBytes(const Mesh& mesh, const std::filesystem::path& path,
+                              const std::string& comment);
+
+// Writes the mesh in the format of the path's extension, atomically.
 Status writeMesh(const Mesh& mesh, const std::filesystem::path& path, const std::string& comment);
 
 }  // namespace datomsim::exporting

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "common/atomic_file.h"
 #include "common/json_nesting.h"
@@ -151,16 +152,33 @@ std::string lowercase(std::string text) {
 }  // namespace
 
 Result<std::string> readFile(const std::filesystem::path& path) {
+  const std::string name = path.string();
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    return Error{fmt::format("cannot read {}: it is a directory", path.string())};
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (std::filesystem::is_directory(status)) {
+    return Error{fmt::format("cannot read {}: it is a directory", name)};
   }
+  const bool regular = std::filesystem::is_regular_file(status);
+  if (!error && !regular && !std::filesystem::is_fifo(status)) {
+    return Error{fmt::format("{}: not a regular file; a device has no end to read up to", name)};
+  }
+  const auto tooLarge = [&] {
+    return Error{
+        fmt::format("{}: more than the {} MiB a file shown in the viewer may hold "
+                    "(docs/limits.md)",
+                    name, kMaxPageInputBytes >> 20)};
+  };
+  if (regular && std::filesystem::file_size(path, error) > kMaxPageInputBytes) return tooLarge();
   std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{fmt::format("cannot read {}: no such file or not readable", path.string())};
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) return Error{fmt::format("cannot read {}", path.string())};
-  return bytes.str();
+  if (!in) return Error{fmt::format("cannot read {}: no such file or not readable", name)};
+  std::string bytes;
+  std::vector<char> chunk(size_t{1} << 20);
+  while (in.read(chunk.data(), std::streamsize(chunk.size())) || in.gcount() > 0) {
+    bytes.append(chunk.data(), size_t(in.gcount()));
+    if (bytes.size() > kMaxPageInputBytes) return tooLarge();
+  }
+  if (in.bad()) return Error{fmt::format("cannot read {}", name)};
+  return bytes;
 }
 
 Result<std::filesystem::path> executableDirectory() {

@@ -34,7 +34,14 @@ struct ViewerPage {
   std::optional<std::string> overlay;
 };
 
-// The whole file's bytes.
+// The most bytes read from a file the viewer's page holds (a trace, a reach map, the viewer's
+// script): 512 MiB, about the longest string a browser's JavaScript holds (V8: 2^29 - 24
+// characters), which the page must.
+inline constexpr size_t kMaxPageInputBytes = size_t{512} << 20;
+
+// The whole file's bytes: a regular file of at most kMaxPageInputBytes (a larger one refused
+// before it is read), or a FIFO read up to that bound; a directory, a device (/dev/zero would
+// never end) or a socket refused. The error names the path.
 Result<std::string> readFile(const std::filesystem::path& path);
 
 // The directory of the binary holding datomsim's code: the shared library's when a researcher's

@@ -4,12 +4,19 @@
 
 #include "frontend/usage_error.h"
 #include "render/distance_map.h"
+#include "render/picture_size.h"
 
 namespace datomsim::frontend {
 
+void addPictureOutputs(const PictureRequest& request, std::vector<NamedPath>& outputs) {
+  // Pictures are files (never standard output).
+  if (!request.png.empty()) outputs.push_back({"--png", request.png});
+  if (!request.svg.empty()) outputs.push_back({"--svg", request.svg});
+}
+
 void writePictures(const world::World& world, bool mobileTakenOut, const motion::DistanceMap& map,
                    const std::vector<geometry::Cell>& path, const std::string& title,
-                   const PictureRequest& request, const Reporter& reporter) {
+                   const PictureRequest& request, CommandFiles& files, const Reporter& reporter) {
   if (request.png.empty() && request.svg.empty()) return;
   render::DistanceMapPicture picture;
   picture.world = &world;
@@ -28,8 +35,8 @@ void writePictures(const world::World& world, bool mobileTakenOut, const motion:
   // What the pictures leave out, as their note line says it.
   const render::DistanceMapLayout layout = unwrap(render::layoutDistanceMap(picture));
   if (!layout.note.empty()) {
-    std::string files = request.png;
-    if (!request.svg.empty()) files += (files.empty() ? "" : ", ") + request.svg;
+    std::string names = request.png;
+    if (!request.svg.empty()) names += (names.empty() ? "" : ", ") + request.svg;
     std::string hint;
     if (layout.scaledDown) {
       render::DistanceMapPicture full = picture;
@@ -38,16 +45,25 @@ void writePictures(const world::World& world, bool mobileTakenOut, const motion:
       hint = fmt::format("; --scale {} draws them at full size, {} x {} px", picture.pixelsPerCell,
                          fullSize.width, fullSize.height);
     }
-    reporter.note(fmt::format("{}: {}{}", files, layout.note, hint));
+    reporter.note(fmt::format("{}: {}{}", names, layout.note, hint));
+  }
+  if (Status fits = render::checkPictureSide(layout.width, layout.height); !fits) {
+    const std::string names =
+        request.png + (request.png.empty() || request.svg.empty() ? "" : ", ") + request.svg;
+    throw UsageError(fmt::format("{}: {}; {}", names, fits.error(),
+                                 // 2 px per cell: the smallest scale (render/distance_map.h).
+                                 layout.pixelsPerCell > 2
+                                     ? "lower --scale or --max-size"
+                                     : "the scene is too wide to draw even at 2 px per cell"));
   }
   const std::string size = fmt::format("{} x {} px", layout.width, layout.height);
   if (!request.png.empty()) {
-    check(render::writeDistanceMapPng(picture, request.png));
-    reporter.reportWritten(request.png, size);
+    files.write(request.png, unwrap(render::renderDistanceMapPng(picture)));
+    files.describe(request.png, size);
   }
   if (!request.svg.empty()) {
-    check(render::writeDistanceMapSvg(picture, request.svg));
-    reporter.reportWritten(request.svg, size);
+    files.write(request.svg, unwrap(render::renderDistanceMapSvg(picture)));
+    files.describe(request.svg, size);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "frontend/output_file.h"
 #include "frontend/reporter.h"
 #include "geometry/cell.h"
 #include "motion/reach.h"
@@ -25,11 +26,16 @@ struct PictureRequest {
   std::string palette = "auto";
 };
 
-// The distance map pictures, for each file asked for. `world` holds the fixed modules; the
-// mobile, when it was taken out of the scene, is counted in the title. `reporter` says when the
-// pictures are drawn smaller than asked or without some of their numbers, and what it wrote.
+// The outputs of `files` the pictures asked for are written to, "--png" and "--svg".
+void addPictureOutputs(const PictureRequest& request, std::vector<NamedPath>& outputs);
+
+// The distance map pictures, for each file asked for, into their outputs of `files`. `world`
+// holds the fixed modules; the mobile, when it was taken out of the scene, is counted in the
+// title. A picture larger than render::kMaxPictureSide on a side is refused before it is drawn.
+// `reporter` says when the pictures are drawn smaller than asked or without some of their
+// numbers.
 void writePictures(const world::World& world, bool mobileTakenOut, const motion::DistanceMap& map,
                    const std::vector<geometry::Cell>& path, const std::string& title,
-                   const PictureRequest& request, const Reporter& reporter);
+                   const PictureRequest& request, CommandFiles& files, const Reporter& reporter);
 
 }  // namespace datomsim::frontend

@@ -103,8 +103,13 @@ std::vector<std::string> loadsSummary(const LoadsOutput& output) {
   return lines;
 }
 
+void addLoadPictureOutputs(const LoadsArguments& args, std::vector<NamedPath>& outputs) {
+  if (!args.png.empty()) outputs.push_back({"--png", args.png});
+  if (!args.svg.empty()) outputs.push_back({"--svg", args.svg});
+}
+
 void writeLoadPictures(const LoadsOutput& output, const LoadsArguments& args,
-                       const std::string& sceneName, const Reporter& reporter) {
+                       const std::string& sceneName, CommandFiles& files) {
   if (args.png.empty() && args.svg.empty()) return;
   const mechanics::LoadModel& model = output.model;
   render::ValueMapPicture picture;
@@ -127,12 +132,12 @@ void writeLoadPictures(const LoadsOutput& output, const LoadsArguments& args,
                                elastic::quantityText(model.parameters.latchForce, "N")),
                    summary.back()};
   if (!args.png.empty()) {
-    unwrap(render::writeValueMapPng(picture, args.png));
-    reporter.reportWritten(args.png, "the safety map");
+    files.write(args.png, unwrap(render::renderValueMapPng(picture)));
+    files.describe(args.png, "the safety map");
   }
   if (!args.svg.empty()) {
-    unwrap(render::writeValueMapSvg(picture, args.svg));
-    reporter.reportWritten(args.svg, "the safety map");
+    files.write(args.svg, unwrap(render::renderValueMapSvg(picture)));
+    files.describe(args.svg, "the safety map");
   }
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "datomsim/result.h"
+#include "frontend/output_file.h"
 #include "frontend/reporter.h"
 #include "geometry/vec3.h"
 #include "mechanics/load_model.h"
@@ -52,8 +53,11 @@ std::vector<std::string> loadsSummary(const LoadsOutput& output);
 std::string loadsJson(const LoadsOutput& output);
 Status writeLoadsJson(const LoadsOutput& output, std::FILE* file);
 
-// The safety map pictures asked for (args.png, args.svg), written whole or not at all.
+// The outputs of `files` the safety map pictures asked for are written to, "--png" and "--svg".
+void addLoadPictureOutputs(const LoadsArguments& args, std::vector<NamedPath>& outputs);
+
+// The safety map pictures asked for (args.png, args.svg), into their outputs of `files`.
 void writeLoadPictures(const LoadsOutput& output, const LoadsArguments& args,
-                       const std::string& sceneName, const Reporter& reporter);
+                       const std::string& sceneName, CommandFiles& files);
 
 }  // namespace datomsim::frontend

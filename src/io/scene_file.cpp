@@ -75,7 +75,7 @@ Result<Scene> readScene(const std::filesystem::path& path) {
   return parseVisibleSimXml(text, name);
 }
 
-Status writeScene(const Scene& scene, const std::filesystem::path& path) {
+Status writeScene(const Scene& scene, const std::filesystem::path& path, std::FILE* file) {
   const auto format = sceneFormatOf(path);
   if (!format) return Error{format.error()};
   if (*format == SceneFormat::kVisibleSimXml && !scene.parameters.empty()) {
@@ -84,12 +84,16 @@ Status writeScene(const Scene& scene, const std::filesystem::path& path) {
                  ": VisibleSim's XML has no place for the scene's program parameters (\"" +
                  scene.parameters.begin()->first + "\", ...); write JSON instead"};
   }
-  return writeFileAtomically(path, [&](std::FILE* file) -> Status {
-    const Status written =
-        *format == SceneFormat::kJson ? writeJson(scene, file) : writeVisibleSimXml(scene, file);
-    if (!written) return Error{"cannot write " + path.string() + ": " + written.error()};
-    return Ok{};
-  });
+  const Status written =
+      *format == SceneFormat::kJson ? writeJson(scene, file) : writeVisibleSimXml(scene, file);
+  if (!written) return Error{"cannot write " + path.string() + ": " + written.error()};
+  return Ok{};
+}
+
+Status writeScene(const Scene& scene, const std::filesystem::path& path) {
+  // Refused before a file is made.
+  if (const auto format = sceneFormatOf(path); !format) return Error{format.error()};
+  return writeFileAtomically(path, [&](std::FILE* file) { return writeScene(scene, path, file); });
 }
 
 }  // namespace datomsim::io

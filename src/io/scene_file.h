@@ -5,6 +5,7 @@
 // leaves no file behind and an existing file untouched.
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
 
 #include "datomsim/result.h"
@@ -25,5 +26,8 @@ Result<Scene> readScene(const std::filesystem::path& path);
 
 // Writes a scene file in the format of its extension, atomically.
 Status writeScene(const Scene& scene, const std::filesystem::path& path);
+// The same into an open file, in the format `path`'s extension names (a command's outputs are
+// opened in one place: frontend/output_file.h).
+Status writeScene(const Scene& scene, const std::filesystem::path& path, std::FILE* file);
 
 }  // namespace datomsim::io

@@ -16,6 +16,7 @@
 #include "common/atomic_file.h"
 #include "render/distance_map_drawing.h"
 #include "render/distance_map_layout.h"
+#include "render/picture_size.h"
 #include "render/svg_ids.h"
 
 namespace datomsim::render {
@@ -23,9 +24,6 @@ namespace datomsim::render {
 namespace {
 
 using detail::Scene;
-
-// Cairo's image surfaces are at most this many pixels on a side.
-constexpr int kMaxPngSide = 32767;
 
 cairo_status_t appendToString(void* closure, const unsigned char* data, unsigned int length) {
   static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
@@ -106,12 +104,8 @@ Result<std::string> renderDistanceMapPng(const DistanceMapPicture& picture) {
   const Result<Scene> scene = detail::prepare(picture);
   if (!scene) return Error{scene.error()};
   const DistanceMapLayout layout = detail::layoutOf(*scene, picture);
-  if (layout.width > kMaxPngSide || layout.height > kMaxPngSide) {
-    return Error{fmt::format(
-        "the picture would be {} x {} pixels, more than the {} a PNG can have on a side; lower "
-        "pixelsPerCell ({}) or set maxSide",
-        layout.width, layout.height, kMaxPngSide, layout.pixelsPerCell)};
-  }
+  if (Status fits = checkPictureSide(layout.width, layout.height); !fits)
+    return Error{fits.error()};
   // RGB without alpha: the background is opaque white, and the files are smaller.
   const SurfacePtr surface(
       cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height));
@@ -129,6 +123,8 @@ Result<std::string> renderDistanceMapSvg(const DistanceMapPicture& picture) {
   const Result<Scene> scene = detail::prepare(picture);
   if (!scene) return Error{scene.error()};
   const DistanceMapLayout layout = detail::layoutOf(*scene, picture);
+  if (Status fits = checkPictureSide(layout.width, layout.height); !fits)
+    return Error{fits.error()};
   std::string bytes;
   detail::SvgCellPainter painter;
   {
@@ -167,11 +163,8 @@ Result<std::string> renderSideBySidePng(const std::vector<DistanceMapPicture>& p
     height = std::max(height, layout.height);
     laid.push_back({std::move(scene).value(), layout});
   }
-  if (width > kMaxPngSide || height > kMaxPngSide) {
-    return Error{fmt::format(
-        "the pictures side by side would be {} x {} pixels, more than the {} a PNG can have on "
-        "a side; lower pixelsPerCell or set maxSide",
-        width, height, kMaxPngSide)};
+  if (Status fits = checkPictureSide(width, height); !fits) {
+    return Error{"side by side, " + fits.error()};
   }
   const SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "common/atomic_file.h"
+#include "render/picture_size.h"
 #include "render/svg_ids.h"
 
 namespace datomsim::render {
@@ -222,6 +223,8 @@ template <typename Make, typename Finish>
 Result<std::string> render(const ValueMapPicture& picture, Make make, Finish finish) {
   if (Status checked = checkPicture(picture); !checked) return Error{checked.error()};
   const Layout layout = layoutOf(picture);
+  if (Status fits = checkPictureSide(layout.width, layout.height); !fits)
+    return Error{fits.error()};
   std::string bytes;
   cairo_surface_t* surface = make(layout, &bytes);
   cairo_t* cr = cairo_create(surface);

@@ -206,7 +206,7 @@ TEST_F(DistanceMap, RefusesABadPictureNamingTheCellOrValueAndWritesNothing) {
       {&twice, "cell 1,2,3 appears twice"},
       {&tiny, "pixelsPerCell is 1"},
       {&unlimited, "maxSide is -1"},
-      {&huge, "lower pixelsPerCell (256)"},
+      {&huge, "51893 x 598 pixels, more than the 32767 pixels a picture may have on a side"},
   };
   for (const auto& [picture, message] : cases) {
     const Status status = writeDistanceMapPng(*picture, path);
@@ -214,6 +214,10 @@ TEST_F(DistanceMap, RefusesABadPictureNamingTheCellOrValueAndWritesNothing) {
     EXPECT_NE(status.error().find(message), std::string::npos) << status.error();
     EXPECT_NE(status.error().find(path.string()), std::string::npos) << status.error();
   }
+  // An SVG as wide is refused too, before cairo is asked to draw it.
+  const Result<std::string> svg = renderDistanceMapSvg(huge);
+  ASSERT_FALSE(svg.ok());
+  EXPECT_NE(svg.error().find("more than the 32767 pixels"), std::string::npos) << svg.error();
   EXPECT_TRUE(fs::is_empty(directory_));
 }
 

@@ -122,7 +122,7 @@ Result<MobileChoice> chooseMobile(const world::World& world, const Cell& goal,
 bool isRunOutputKey(std::string_view key) {
   // The program's name, what the watch of a target writes, the reason of a failure and the
   // statistics (frontend/run_json.cpp).
-  static constexpr std::array<std::string_view, 19> kKeys = {"program",
+  static constexpr std::array<std::string_view, 20> kKeys = {"program",
                                                              "success",
                                                              "reason",
                                                              "final",
@@ -140,7 +140,8 @@ bool isRunOutputKey(std::string_view key) {
                                                              "events_by_kind",
                                                              "deformations",
                                                              "sim_time_s",
-                                                             "gravity"};
+                                                             "gravity",
+                                                             "energy"};
   return std::find(kKeys.begin(), kKeys.end(), key) != kKeys.end();
 }
 
@@ -262,6 +263,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   result.mobile = mobile;
   result.statistics = simulator.statistics();
   if (const mechanics::JudgeCounts* counts = simulator.loadCounts()) result.loadChecks = *counts;
+  result.energy = simulator.energy();
   if (request.trace) {
     trace.footer(simulator.now(), summaryJson(result.statistics));
     result.trace = trace.text();

@@ -115,6 +115,25 @@ TEST_F(ActuatorsCommand, ComparesCombinationsAndSizesOnARun) {
       << markdown;
 }
 
+// docs/actuators.md shows the comparison on the paper's arch: the page must be what the command
+// writes (paste DIR/compare.md between the markers when the models change).
+TEST_F(ActuatorsCommand, TheDocsShowWhatCompareWrites) {
+  const std::string source = DATOMSIM_SOURCE_DIR;
+  const Outcome outcome = datomsim("actuators compare " + source +
+                                   "/scenes/paper-arch-hole2.json --program follow-gradient "
+                                   "--goal 6,5,2 --start 0,0,2 -o " +
+                                   path("arch"));
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const std::string page = testing::readText(source + "/docs/actuators.md");
+  const std::string begin = "<!-- experiment table: begin -->\n";
+  const size_t from = page.find(begin);
+  const size_t to = page.find("<!-- experiment table: end -->");
+  ASSERT_NE(from, std::string::npos);
+  ASSERT_NE(to, std::string::npos);
+  EXPECT_EQ(page.substr(from + begin.size(), to - from - begin.size()),
+            testing::readText(path("arch/compare.md")));
+}
+
 TEST_F(ActuatorsCommand, CompareRefusesBadValuesBeforeAnyRun) {
   const std::string scene = arch(1);
   for (const auto& [options, message] :

@@ -117,6 +117,22 @@ TEST_F(ActuatorsRun, ARunWithoutActuatorsKeepsItsOutput) {
   EXPECT_NE(with["makespan_s"], without["makespan_s"]);
 }
 
+// Reconfiguration calls a run stalled when no target cell is filled for 600 s of fixed-time
+// motions; a motion of a 10 cm SMA module waits 150 s for its wire to cool, so the watch's limits
+// stretch with the motions' time.
+TEST_F(ActuatorsRun, SlowActuatorsStillBuildTheArch) {
+  const std::string scene = path("reshape.json");
+  ASSERT_EQ(datomsim("generate reshape arch2 -o " + scene).status, 0);
+  const Outcome outcome = datomsim("run " + scene +
+                                   " --program reconfigure --actuators sma-spring+electrostatic "
+                                   "--size 10cm --out " +
+                                   path("run.json"));
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const nlohmann::json run = nlohmann::json::parse(readText(path("run.json")));
+  EXPECT_TRUE(run["success"].get<bool>());
+  EXPECT_GT(run["makespan_s"].get<double>(), 600.0);
+}
+
 TEST_F(ActuatorsRun, StatsPrintTheEnergy) {
   const Outcome outcome = datomsim(
       followGradient() + " --actuators sma-spring+electrostatic --stats --out " + path("run.json"));

@@ -86,7 +86,7 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
   app::addVideoCommand(app, reporter);
   app::addSweepCommand(app, reporter);
   app::addMeshCommand(app, reporter);
-  app::addActuatorsCommand(app);
+  app::addActuatorsCommand(app, reporter);
   app::addCompletionCommand(app);
 
   // A first word that names no subcommand: say so, and which one was meant.

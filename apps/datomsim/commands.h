@@ -65,7 +65,7 @@ void addMeshCommand(CLI::App& app, const Reporter& reporter);
 void addVideoCommand(CLI::App& app, const Reporter& reporter);
 void addSweepCommand(CLI::App& app, const Reporter& reporter);
 // `actuators show`: designs and their scaling laws (docs/actuators.md).
-void addActuatorsCommand(CLI::App& app);
+void addActuatorsCommand(CLI::App& app, const Reporter& reporter);
 
 // For `video` and `demo`: a count of frames on standard error when it is a terminal (none when
 // quiet or in a log), and what a video holds for its "wrote" line.

@@ -7,6 +7,9 @@
 
 #include "algorithms/registry.h"
 #include "commands.h"
+#include "export/viewer_page.h"
+#include "frontend/actuators_json.h"
+#include "frontend/energy_json.h"
 #include "frontend/run_json.h"
 #include "io/scene_file.h"
 #include "sim/statistics.h"
@@ -125,6 +128,23 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
                    "the rest of their piece held where it is (faster, approximate); 0: whole "
                    "pieces, exact")
       ->capture_default_str();
+  command->add_option(
+      "--actuators", args->actuators,
+      "The modules' actuators, DEFORMATION+LATCH (e.g. sma-spring+electrostatic): the pistons' "
+      "and latches' durations are theirs and their energy is counted (docs/actuators.md)");
+  command
+      ->add_option("--size", args->size,
+                   "With --actuators: the module's radius r with its unit: 1mm, 1cm, 10cm (its "
+                   "part thickness t is r / 10)")
+      ->capture_default_str();
+  auto powerCsv = std::make_shared<std::string>();
+  auto designs = std::make_shared<std::string>();
+  command->add_option("--designs", *designs,
+                      "With --actuators: the folder of design files (default: the installed "
+                      "share/datomsim/actuators)");
+  command->add_option("--power-csv", *powerCsv,
+                      "With --actuators: write the ensemble's power over time here (CSV: "
+                      "time_s,power_W,energy_J)");
   addOutputOption(*command, args->out);
   command->add_option("--trace", args->trace, "Write the trace (JSON Lines) for the viewer here");
   command->add_flag("--stats", args->stats,
@@ -133,10 +153,22 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
   addExample(*command,
              "run scenes/paper-arch-hole1.json --program follow-gradient --goal 6,5,2 --start "
              "0,0,2 --trace arch1.jsonl");
-  command->callback([args, command, added, &reporter] {
+  command->callback([args, command, added, powerCsv, designs, &reporter] {
     std::vector<NamedPath> outputs = {{"--out", args->out}};
     if (!args->trace.empty()) outputs.push_back({"--trace", args->trace});
-    CommandFiles files({{"scene", args->scene}, {"--target", args->target}}, outputs);
+    if (!powerCsv->empty()) outputs.push_back({"--power-csv", *powerCsv});
+    std::vector<NamedPath> inputs = {{"scene", args->scene}, {"--target", args->target}};
+    if (!designs->empty()) inputs.push_back({"--designs", *designs});
+    CommandFiles files(inputs, outputs);
+    // Refused without --actuators by runOnScene, as Python's keywords would be.
+    for (const char* option : {"--size", "--designs", "--power-csv"}) {
+      if (command->count(option) > 0) args->actuatorOptionsGiven.emplace_back(option);
+    }
+    if (!args->actuators.empty()) {
+      args->actuatorDesigns = frontend::actuatorDesignDirectory(
+          *designs,
+          designs->empty() ? unwrap(exporting::executableDirectory()) : std::filesystem::path{});
+    }
     args->connectivityGiven = command->count("--connectivity") > 0;
     // Refused with gravity off by runOnScene, as Python's keywords are.
     for (const char* option : kLoadParameterOptions) {
@@ -152,8 +184,15 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
     files.write("--out", [&](std::FILE* file) {
       return frontend::writeRunJson(run.kind.name, run.result, file);
     });
+    if (!powerCsv->empty() && run.result.energy) {
+      files.write("--power-csv", frontend::powerCsv(*run.result.energy));
+    }
     files.commit(reporter);
     if (args->stats) printStatistics(run.result.statistics, run.result.loadChecks);
+    if (args->stats && run.result.energy) {
+      fmt::print(stderr, "{}",
+                 frontend::energySummary(*run.result.energy, run.result.statistics.motions));
+    }
     if (run.failure) throw UsageError(*run.failure);
   });
 }

@@ -45,10 +45,14 @@ std::vector<Cell> unreachable(const world::World& world, const motion::RuleTable
 
 }  // namespace
 
-ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int maxMotions) {
-  const Time share =
+ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int maxMotions,
+                        Time pace) {
+  const Time queued =
       maxMotions > 0 ? std::max<Time>(1, (Time(movers) + maxMotions - 1) / maxMotions) : 1;
-  limits.stall *= share;
+  Time share = 0;
+  if (__builtin_mul_overflow(queued, std::max<Time>(1, pace), &share)) share = kLatestTime;
+  if (__builtin_mul_overflow(limits.stall, share, &limits.stall)) limits.stall = kLatestTime;
+  limits.stall = std::min(limits.stall, kLatestTime);
   if (limits.timeout == 0) {
     // Held at the latest time a run may be asked to reach, as --timeout is (docs/limits.md).
     Time timeout = 0;

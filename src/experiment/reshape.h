@@ -30,8 +30,10 @@ struct ReshapeLimits {
 // The limits of a run whose motions wait in a queue of `maxMotions` (0: no limit) shared by
 // `movers` modules: each mover then moves about once per ceil(movers / maxMotions) motion times,
 // so the stall and the default timeout stretch as much, and the sequential baseline is judged
-// by the same measure as the parallel run.
-ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int maxMotions);
+// by the same measure as the parallel run. Motions `pace` times as long as the fixed ones (the
+// modules' actuators, sim/actuation.h) stretch them as much again.
+ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int maxMotions,
+                        Time pace = 1);
 
 struct ReshapeOutcome {
   bool success = false;

@@ -119,10 +119,28 @@ Result<MobileChoice> chooseMobile(const world::World& world, const Cell& goal,
   return MobileChoice{};
 }
 
+namespace {
+
+// How many times longer than the fixed times a motion with a double deformation takes with the
+// run's actuators (at least 1), rounded up.
+Time paceOf(const sim::SimulationOptions& options) {
+  if (!options.actuators) return 1;
+  const auto motionTime = [](const sim::ActuationTimes& times) {
+    return times.firstTurn() + times.middle() + times.doubleDeformation() + times.secondTurn();
+  };
+  const Time fixed =
+      motionTime(sim::ActuationTimes::fixed(options.deformationTime, options.quarterTurnTime));
+  const Time actuated =
+      motionTime(sim::ActuationTimes::of(*options.actuators, options.quarterTurnTime));
+  return std::max<Time>(1, (actuated + fixed - 1) / std::max<Time>(1, fixed));
+}
+
+}  // namespace
+
 bool isRunOutputKey(std::string_view key) {
   // The program's name, what the watch of a target writes, the reason of a failure and the
   // statistics (frontend/run_json.cpp).
-  static constexpr std::array<std::string_view, 19> kKeys = {"program",
+  static constexpr std::array<std::string_view, 20> kKeys = {"program",
                                                              "success",
                                                              "reason",
                                                              "final",
@@ -140,7 +158,8 @@ bool isRunOutputKey(std::string_view key) {
                                                              "events_by_kind",
                                                              "deformations",
                                                              "sim_time_s",
-                                                             "gravity"};
+                                                             "gravity",
+                                                             "energy"};
   return std::find(kKeys.begin(), kKeys.end(), key) != kKeys.end();
 }
 
@@ -202,7 +221,8 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     const auto movers = size_t(
         std::count_if(world.modules().begin(), world.modules().end(),
                       [&](const world::Module& module) { return !shape->contains(module.cell); }));
-    limits = limitsFor(limits, world.size(), movers, request.simulation.maxMotions);
+    limits = limitsFor(limits, world.size(), movers, request.simulation.maxMotions,
+                       paceOf(request.simulation));
   }
 
   // A program with a goal has a mobile; the others run on the scene as it is.
@@ -262,6 +282,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   result.mobile = mobile;
   result.statistics = simulator.statistics();
   if (const mechanics::JudgeCounts* counts = simulator.loadCounts()) result.loadChecks = *counts;
+  result.energy = simulator.energy();
   if (request.trace) {
     trace.footer(simulator.now(), summaryJson(result.statistics));
     result.trace = trace.text();

@@ -89,6 +89,8 @@ struct RunResult {
   sim::Statistics statistics;
   // Gravity on: the changes the load judge weighed before they happened.
   std::optional<mechanics::JudgeCounts> loadChecks;
+  // With a model of the actuators (RunRequest::simulation.actuators): what they drew.
+  std::optional<sim::EnergyReport> energy;
   std::string trace;  // JSON Lines, when asked for
 };
 

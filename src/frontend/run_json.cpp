@@ -5,6 +5,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "frontend/energy_json.h"
 #include "frontend/json_stream.h"
 #include "sim/statistics.h"
 
@@ -105,6 +106,8 @@ void streamRunJson(std::string_view program, const experiment::RunResult& result
                                       {"largest_piece", checks->largest}};
     out.field("gravity", gravity);
   }
+  // Written only with actuators: a run without keeps its bytes.
+  if (result.energy) out.field("energy", energyJson(*result.energy, statistics.motions));
   // Wall time stays out of the JSON, which is the same for the same inputs; --stats prints it.
   out.close();
 }

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "frontend/actuator_model.h"
+#include "frontend/actuators_json.h"
 #include "frontend/loads_on_scene.h"
 #include "frontend/usage_error.h"
 #include "io/scene_file.h"
@@ -43,6 +45,31 @@ std::optional<elastic::LoadParameters> gravityOf(const RunArguments& args, world
     throw UsageError("--gravity: " + checked.error());
   }
   return parameters;
+}
+
+// The run's actuators, checked; nothing without --actuators.
+std::optional<sim::ActuatorModel> actuatorsOf(const RunArguments& args, world::ModuleKind kind) {
+  if (args.actuators.empty()) {
+    if (!args.actuatorOptionsGiven.empty()) {
+      throw UsageError(fmt::format("{} is an option of the actuators: it needs --actuators",
+                                   args.actuatorOptionsGiven.front()));
+    }
+    return std::nullopt;
+  }
+  if (kind != world::ModuleKind::kDatom) {
+    throw UsageError(
+        "--actuators: the designs drive a Datom's pistons and latches (docs/actuators.md); 3D "
+        "Catoms have none");
+  }
+  ActuatorChoice choice;
+  choice.combination = args.actuators;
+  choice.radius = parseLength(args.size, "--size");
+  choice.thickness = args.thickness.value_or(choice.radius / 10.0);
+  if (!std::isfinite(choice.thickness) || choice.thickness <= 0) {
+    throw UsageError(fmt::format("--thickness {}: a length in metres above 0", choice.thickness));
+  }
+  choice.directory = args.actuatorDesigns;
+  return actuatorModel(choice);
 }
 
 }  // namespace
@@ -84,6 +111,7 @@ RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArg
     request.simulation.rules.connectivity = request.simulation.connectivity;
   }
   request.simulation.gravity = gravityOf(args, scene.moduleKind);
+  request.simulation.actuators = actuatorsOf(args, scene.moduleKind);
   if (args.loadRegion < 0) {
     throw UsageError(
         fmt::format("--load-region {}: a number of modules, 0 or more", args.loadRegion));

@@ -2,6 +2,7 @@
 // that both check the same things and refuse with the same messages.
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <span>
@@ -46,6 +47,15 @@ struct RunArguments {
   // The options of the load model given ("--latch-force", "--load-region"...): refused with
   // gravity off.
   std::vector<std::string> loadOptionsGiven;
+  // The modules' actuators, DEFORMATION+LATCH (empty: the fixed times, no energy counted), at the
+  // module's radius (`size`, with its unit) and part thickness in metres (default r / 10), read
+  // from `actuatorDesigns` (docs/actuators.md, "In the simulator").
+  std::string actuators;
+  std::string size = "1cm";
+  std::optional<double> thickness;
+  std::filesystem::path actuatorDesigns;
+  // The options of the actuators given ("--size", "--power-csv"...): refused without them.
+  std::vector<std::string> actuatorOptionsGiven;
   // Record the trace even with no --trace file (the caller writes it).
   bool wantTrace = false;
 };

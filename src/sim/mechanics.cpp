@@ -19,8 +19,8 @@ constexpr uint8_t pistonBit(int piston) {
 }  // namespace
 
 Mechanics::Mechanics(world::World& world, EventQueue& agenda, const Announcer& announce,
-                     Time deformationTime)
-    : world_(world), agenda_(agenda), announce_(announce), deformationTime_(deformationTime) {}
+                     ActuationTimes times)
+    : world_(world), agenda_(agenda), announce_(announce), times_(times) {}
 
 Mechanics::Pistons& Mechanics::stateOf(uint32_t index) {
   // Made on the first piston that moves: a run whose modules never deform keeps none.
@@ -61,8 +61,9 @@ void Mechanics::compress(uint32_t index, int ownPiston) {
   }
   const Time now = agenda_.now();
   announce_(&Observer::pistonMoving, now,
-            PistonMove{module.id, ownPiston, 0, 1, now, deformationTime_, PistonCause::kProgram});
-  agenda_.schedule(timeAfter(now, deformationTime_), EventKind::kDeformationDone, index, 0);
+            PistonMove{module.id, ownPiston, 0, 1, timeAfter(now, times_.unlatch),
+                       times_.programCompress, PistonCause::kProgram});
+  agenda_.schedule(timeAfter(now, times_.compression()), EventKind::kDeformationDone, index, 0);
 }
 
 Status Mechanics::release(uint32_t index) {
@@ -78,8 +79,8 @@ Status Mechanics::release(uint32_t index) {
   const Time now = agenda_.now();
   announce_(
       &Observer::pistonMoving, now,
-      PistonMove{module.id, state.piston, 1, 0, now, deformationTime_, PistonCause::kProgram});
-  agenda_.schedule(timeAfter(now, deformationTime_), EventKind::kDeformationDone, index, 0);
+      PistonMove{module.id, state.piston, 1, 0, now, times_.programRelease, PistonCause::kProgram});
+  agenda_.schedule(timeAfter(now, times_.release()), EventKind::kDeformationDone, index, 0);
   return Ok{};
 }
 
@@ -105,23 +106,23 @@ bool Mechanics::finishDeformation(uint32_t index, std::span<const int16_t> motio
   return false;  // a double deformation's switch, driven by its motion
 }
 
-void Mechanics::drive(uint32_t index, int ownPiston, Time duration) {
+void Mechanics::drive(uint32_t index, int ownPiston) {
   Pistons& state = stateOf(index);
   state.piston = static_cast<int8_t>(ownPiston);
   state.phase = Phase::kDriving;
   state.compressedMask |= pistonBit(ownPiston);
   touch(index);
   const Time now = agenda_.now();
-  announce_(
-      &Observer::pistonMoving, now,
-      PistonMove{world_.modules()[index].id, ownPiston, 0, 1, now, duration, PistonCause::kMotion});
+  announce_(&Observer::pistonMoving, now,
+            PistonMove{world_.modules()[index].id, ownPiston, 0, 1, timeAfter(now, times_.unlatch),
+                       times_.driveCompress, PistonCause::kMotion});
 }
 
-void Mechanics::driveBack(uint32_t index, Time duration) {
+void Mechanics::driveBack(uint32_t index) {
   const Time now = agenda_.now();
   announce_(&Observer::pistonMoving, now,
-            PistonMove{world_.modules()[index].id, pistons(index).piston, 1, 0, now, duration,
-                       PistonCause::kMotion});
+            PistonMove{world_.modules()[index].id, pistons(index).piston, 1, 0, now,
+                       times_.driveRelease, PistonCause::kMotion});
 }
 
 void Mechanics::rest(uint32_t index) {
@@ -132,15 +133,16 @@ void Mechanics::rest(uint32_t index) {
   touch(index);
 }
 
-void Mechanics::beginSwitch(uint32_t index, int ownPiston) {
+void Mechanics::beginSwitch(uint32_t index, int ownPiston, Time start) {
   const ModuleId id = world_.modules()[index].id;
   const Time now = agenda_.now();
   announce_(&Observer::pistonMoving, now,
-            PistonMove{id, pistons(index).piston, 1, 0, now, deformationTime_,
+            PistonMove{id, pistons(index).piston, 1, 0, start, times_.programRelease,
                        PistonCause::kDoubleDeformation});
+  // Y moves once X is back and latched and Y's own connectors have let go.
   announce_(&Observer::pistonMoving, now,
-            PistonMove{id, ownPiston, 0, 1, now + deformationTime_, deformationTime_,
-                       PistonCause::kDoubleDeformation});
+            PistonMove{id, ownPiston, 0, 1, timeAfter(start, times_.release() + times_.unlatch),
+                       times_.programCompress, PistonCause::kDoubleDeformation});
   stateOf(index).next = static_cast<int8_t>(ownPiston);
 }
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "datomsim/result.h"
+#include "sim/actuation.h"
 #include "sim/event_queue.h"
 #include "sim/observer.h"
 #include "world/latch_search.h"
@@ -43,9 +44,9 @@ class Mechanics {
     int8_t next = -1;            // a double deformation's second piston, until it compresses
   };
 
-  // `deformationTime`: from rest to fully compressed, and back.
+  // `times`: a program's deformations, and how long latches take to change (sim/actuation.h).
   Mechanics(world::World& world, EventQueue& agenda, const Announcer& announce,
-            Time deformationTime);
+            ActuationTimes times);
 
   const Pistons& pistons(uint32_t index) const {
     static constexpr Pistons kAtRest{};
@@ -65,14 +66,15 @@ class Mechanics {
   bool finishDeformation(uint32_t index, std::span<const int16_t> motionOf);
 
   // What a motion does to the pistons of its pivot and mobile: compress one over the first
-  // quarter turn, announce its return over the second, then put it at rest.
-  void drive(uint32_t index, int ownPiston, Time duration);
-  void driveBack(uint32_t index, Time duration);
+  // quarter turn (after its connectors let go), announce its return over the second, then put it
+  // at rest.
+  void drive(uint32_t index, int ownPiston);
+  void driveBack(uint32_t index);
   void rest(uint32_t index);
-  // A def(X, Y) module half-way through a motion releases X, then compresses Y, one deformation
-  // time each: beginSwitch announces both moves; finishSwitch, when X is back at rest, latches
-  // X's connectors again where they face a module at rest and lets go of Y's.
-  void beginSwitch(uint32_t index, int ownPiston);
+  // A def(X, Y) module half-way through a motion releases X from `start`, then compresses Y, one
+  // deformation each: beginSwitch announces both moves; finishSwitch, when X is back at rest and
+  // latched, latches X's connectors again where they face a module at rest and lets go of Y's.
+  void beginSwitch(uint32_t index, int ownPiston, Time start);
   void finishSwitch(uint32_t index, std::span<const int16_t> motionOf);
 
   // Latches or releases the pair facing across world direction d (a neighbour must be there),
@@ -97,7 +99,7 @@ class Mechanics {
   world::World& world_;
   EventQueue& agenda_;
   const Announcer& announce_;
-  Time deformationTime_;
+  ActuationTimes times_;
   // A module's pistons to change, made for every module on the first change.
   Pistons& stateOf(uint32_t index);
   std::vector<Pistons> pistons_;  // by world module index; empty until a piston moves

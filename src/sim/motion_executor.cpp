@@ -39,7 +39,7 @@ motion::RuleOptions withoutConnectivity(motion::RuleOptions rules) {
 
 MotionExecutor::MotionExecutor(world::World& world, const motion::RuleTable& table,
                                const motion::RuleOptions& rules, Mechanics& mechanics,
-                               EventQueue& agenda, const Announcer& announce, MotionTimes times,
+                               EventQueue& agenda, const Announcer& announce, ActuationTimes times,
                                MotionLimits limits)
     : world_(world),
       table_(table),
@@ -293,7 +293,7 @@ Result<MotionExecutor::Arrival> MotionExecutor::end(int slot) {
     announce_(
         &Observer::turnEnded, now,
         QuarterTurn{mobileId, pivot.id, pivot.cell, up, active.goalAxis,
-                    *geometry::crossAxes(up, active.goalAxis), 90.0, times_.quarterTurn, false});
+                    *geometry::crossAxes(up, active.goalAxis), 90.0, times_.secondTurn(), false});
   }
   // The goal was held for this motion: free it, then take it.
   reservations_.release(active.claim, slot);

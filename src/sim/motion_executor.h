@@ -38,6 +38,7 @@
 #include "motion/motion.h"
 #include "motion/motion_model.h"
 #include "motion/rule_table.h"
+#include "sim/actuation.h"
 #include "sim/event_queue.h"
 #include "sim/mechanics.h"
 #include "sim/observer.h"
@@ -69,11 +70,6 @@ struct ActiveMotion {
   bool hasDoubleDeformation() const;
 };
 
-struct MotionTimes {
-  Time quarterTurn = 0;  // one of the two quarter turns
-  Time deformation = 0;  // a piston from rest to compressed, or back
-};
-
 struct MotionLimits {
   int maxMotions = 0;         // motions in flight at once; 0: no limit
   bool connectivity = false;  // refuse what would cut modules off from their piece
@@ -92,7 +88,7 @@ class MotionExecutor {
   // The table must outlive the executor.
   MotionExecutor(world::World& world, const motion::RuleTable& table,
                  const motion::RuleOptions& rules, Mechanics& mechanics, EventQueue& agenda,
-                 const Announcer& announce, MotionTimes times, MotionLimits limits);
+                 const Announcer& announce, ActuationTimes times, MotionLimits limits);
 
   // A program asks for a motion of its module (by index).
   MoveResult request(uint32_t mobileIndex, const motion::Motion& motion);
@@ -180,7 +176,7 @@ class MotionExecutor {
   Mechanics& mechanics_;
   EventQueue& agenda_;
   const Announcer& announce_;
-  MotionTimes times_;
+  ActuationTimes times_;
   MotionLimits limits_;
   std::optional<mechanics::LoadJudge> loads_;
   Reservations reservations_;

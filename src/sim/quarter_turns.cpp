@@ -20,8 +20,9 @@ void MotionExecutor::begin(uint32_t index, const motion::Motion& motion, Claim c
   const uint32_t pivotIndex = claim.pivot;
   ActiveMotion planned = plan(motion, index, pivotIndex);
   const Time now = agenda_.now();
-  const Time until =
-      now + 2 * times_.quarterTurn + (planned.hasDoubleDeformation() ? 2 * times_.deformation : 0);
+  const Time until = now + times_.firstTurn() + times_.middle() +
+                     (planned.hasDoubleDeformation() ? times_.doubleDeformation() : 0) +
+                     times_.secondTurn();
   const int slot = occupySlot(std::move(planned), std::move(claim), until);
   const ActiveMotion& active = motions_[slot];
   const motion::Rule& rule = table_.rule(active.plan.rule);
@@ -42,12 +43,12 @@ void MotionExecutor::begin(uint32_t index, const motion::Motion& motion, Claim c
   // Pivot and mobile compress U and F while the mobile turns about -R.
   announce_(&Observer::motionStarted, now,
             MotionStart{m.id, p.id, &active.plan, active.until, model_.get()});
-  mechanics_.drive(pivotIndex, p.orientation.ownPiston(rule.up), times_.quarterTurn);
-  mechanics_.drive(index, m.orientation.ownPiston(rule.front), times_.quarterTurn);
+  mechanics_.drive(pivotIndex, p.orientation.ownPiston(rule.up));
+  mechanics_.drive(index, m.orientation.ownPiston(rule.front));
   announce_(&Observer::turnStarted, now,
             QuarterTurn{m.id, p.id, p.cell, rule.up, geometry::oppositeAxis(rule.front),
-                        geometry::oppositeAxis(rule.right), 90.0, times_.quarterTurn, true});
-  agenda_.schedule(timeAfter(now, times_.quarterTurn), EventKind::kMotionMiddle, index, slot);
+                        geometry::oppositeAxis(rule.right), 90.0, times_.firstTurn(), true});
+  agenda_.schedule(timeAfter(now, times_.firstTurn()), EventKind::kMotionMiddle, index, slot);
 }
 
 ActiveMotion MotionExecutor::plan(const motion::Motion& motion, uint32_t mobileIndex,
@@ -89,24 +90,27 @@ void MotionExecutor::middle(int slot) {
   announce_(
       &Observer::turnEnded, now,
       QuarterTurn{mobile.id, pivot.id, pivot.cell, rule.up, geometry::oppositeAxis(rule.front),
-                  geometry::oppositeAxis(rule.right), 90.0, times_.quarterTurn, true});
+                  geometry::oppositeAxis(rule.right), 90.0, times_.firstTurn(), true});
   // Step 3: the pair towards the goal latches first, then the old pair lets go, so that the
   // mobile holds the pivot at every instant.
   mechanics_.setLatched({pivot.id, active.pivotNew, mobile.id, active.mobileNew}, true);
   mechanics_.setLatched({pivot.id, active.pivotOld, mobile.id, active.mobileOld}, false);
   active.switched = true;
 
-  // A module in a def(X, Y) cell releases X (one deformation time), then compresses Y (one more).
+  // Once the old pair has let go, a module in a def(X, Y) cell releases X (one release), then
+  // compresses Y (one compression).
+  const Time free = timeAfter(now, times_.middle());
   if (!active.hasDoubleDeformation()) {
-    agenda_.schedule(now, EventKind::kMotionResume, active.mobile, slot);
+    agenda_.schedule(free, EventKind::kMotionResume, active.mobile, slot);
     return;
   }
   for (const motion::Deformation& d : active.plan.deformations) {
     if (d.secondAxis < 0) continue;
     const uint32_t index = *world_.indexOf(d.module);
-    mechanics_.beginSwitch(index, world_.modules()[index].orientation.ownPiston(d.secondAxis));
+    mechanics_.beginSwitch(index, world_.modules()[index].orientation.ownPiston(d.secondAxis),
+                           free);
   }
-  agenda_.schedule(timeAfter(now, times_.deformation), EventKind::kMotionSwitch, active.mobile,
+  agenda_.schedule(timeAfter(free, times_.release()), EventKind::kMotionSwitch, active.mobile,
                    slot);
 }
 
@@ -118,7 +122,7 @@ void MotionExecutor::switchPistons(int slot) {
     if (d.secondAxis < 0) continue;
     mechanics_.finishSwitch(*world_.indexOf(d.module), motionOf_);
   }
-  agenda_.schedule(timeAfter(agenda_.now(), times_.deformation), EventKind::kMotionResume,
+  agenda_.schedule(timeAfter(agenda_.now(), times_.compression()), EventKind::kMotionResume,
                    active.mobile, slot);
 }
 
@@ -129,14 +133,14 @@ void MotionExecutor::resume(int slot) {
   const Module& mobile = world_.modules()[active.mobile];
   const motion::Rule& rule = table_.rule(active.plan.rule);
   // Step 4: the mirrored half, pistons back to rest while the mobile turns about U x G.
-  mechanics_.driveBack(active.pivot, times_.quarterTurn);
-  mechanics_.driveBack(active.mobile, times_.quarterTurn);
+  mechanics_.driveBack(active.pivot);
+  mechanics_.driveBack(active.mobile);
   const Time now = agenda_.now();
-  announce_(
-      &Observer::turnStarted, now,
-      QuarterTurn{mobile.id, pivot.id, pivot.cell, rule.up, active.goalAxis,
-                  *geometry::crossAxes(rule.up, active.goalAxis), 90.0, times_.quarterTurn, false});
-  agenda_.schedule(timeAfter(now, times_.quarterTurn), EventKind::kMotionEnd, active.mobile, slot);
+  announce_(&Observer::turnStarted, now,
+            QuarterTurn{mobile.id, pivot.id, pivot.cell, rule.up, active.goalAxis,
+                        *geometry::crossAxes(rule.up, active.goalAxis), 90.0, times_.secondTurn(),
+                        false});
+  agenda_.schedule(timeAfter(now, times_.secondTurn()), EventKind::kMotionEnd, active.mobile, slot);
 }
 
 }  // namespace datomsim::sim

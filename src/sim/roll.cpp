@@ -51,7 +51,7 @@ void MotionExecutor::beginRoll(uint32_t index, const motion::Motion& motion, Cla
       geometry::oppositeDirection(roll.mobileDirection), geometry::oppositeDirection(towardsGoal)));
   active.middle = active.end;
   const Time now = agenda_.now();
-  const int slot = occupySlot(std::move(active), std::move(claim), now + 2 * times_.quarterTurn);
+  const int slot = occupySlot(std::move(active), std::move(claim), now + times_.roll);
   const ActiveMotion& started = motions_[slot];
   // The Catom lets go of everything but its pivot, and rolls.
   for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {

@@ -43,20 +43,39 @@ std::string Violation::describe() const {
                      double(time) / kSecond, sequence, toString(kind), module.value, what);
 }
 
+namespace {
+
+ActuationTimes actuationTimes(const SimulationOptions& options) {
+  return options.actuators
+             ? ActuationTimes::of(*options.actuators, options.quarterTurnTime)
+             : ActuationTimes::fixed(options.deformationTime, options.quarterTurnTime);
+}
+
+}  // namespace
+
 Simulator::Simulator(world::World world, const motion::RuleTable& table, SimulationOptions options)
     : world_(std::move(world)),
       table_(table),
       model_(catom3d::motionModelFor(options.moduleKind, table, options.rules, options.rolling)),
       options_(options),
-      mechanics_(world_, agenda_, announce_, options.deformationTime),
+      mechanics_(world_, agenda_, announce_, actuationTimes(options)),
       motions_(world_, table, options.rules, mechanics_, agenda_, announce_,
-               {options.quarterTurnTime, options.deformationTime},
+               actuationTimes(options),
                {options.maxMotions, options.connectivity, options.moduleKind, options.rolling,
                 options.gravity, options.loadRegion}),
       transport_(world_, motions_, agenda_, announce_,
                  {options.messageDelay, options.messageJitter}, options.seed) {
   announce_.subscribeToChanges(&statistics_);
   announce_.subscribeToLatches(&latchChanges_);
+  if (options.actuators) {
+    energy_ = std::make_unique<EnergyRecorder>(*options.actuators, world_);
+    announce_.subscribeToChanges(energy_.get());
+  }
+}
+
+std::optional<EnergyReport> Simulator::energy() const {
+  if (!energy_) return std::nullopt;
+  return energy_->report(agenda_.now());
 }
 
 Random& Simulator::randomOf(uint32_t index) {

@@ -28,6 +28,8 @@
 #include "motion/motion_model.h"
 #include "motion/rule_table.h"
 #include "program/program_source.h"
+#include "sim/actuation.h"
+#include "sim/energy.h"
 #include "sim/event_queue.h"
 #include "sim/mechanics.h"
 #include "sim/motion_executor.h"
@@ -49,6 +51,10 @@ struct SimulationOptions {
   Time deformationTime = 500 * kMillisecond;
   // One of the two quarter turns of a motion.
   Time quarterTurnTime = 1000 * kMillisecond;
+  // The modules' actuators (sim/actuation.h): when given, the durations of the pistons and the
+  // latches are theirs (deformationTime and quarterTurnTime are not used but for a 3D Catom's
+  // roll), and what they draw is counted (energy()).
+  std::optional<ActuatorModel> actuators;
   motion::RuleOptions rules;
   // What the modules are: Datoms turn by the rules above, 3D Catoms roll by `rolling`
   // (docs/catom3d.md); a roll takes two quarter turns' time.
@@ -114,6 +120,8 @@ class Simulator {
   const Statistics& statistics() const { return statistics_.statistics(); }
   // What the load judge has done, with gravity on; nothing with gravity off.
   const mechanics::JudgeCounts* loadCounts() const { return motions_.loadCounts(); }
+  // What the actuators drew up to now, with a model of them; nothing without.
+  std::optional<EnergyReport> energy() const;
   Time now() const { return agenda_.now(); }
   // Whether events remain (a run stopped at its `until`).
   bool pending() const { return !agenda_.empty(); }
@@ -158,6 +166,8 @@ class Simulator {
     bool any() const { return !changes.empty(); }
     std::vector<std::pair<world::LatchPair, bool>> changes;
   } latchChanges_;
+  // Counts the actuators' energy; only with a model of them.
+  std::unique_ptr<EnergyRecorder> energy_;
   Mechanics mechanics_;
   MotionExecutor motions_;
   Transport transport_;

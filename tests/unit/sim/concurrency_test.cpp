@@ -292,12 +292,12 @@ struct Parts {
   world::World world;
   EventQueue agenda;
   Announcer announce;
-  Mechanics mechanics{world, agenda, announce, 500 * kMillisecond};
+  Mechanics mechanics{world, agenda, announce, ActuationTimes::fixed(500 * kMillisecond, kSecond)};
   MotionExecutor motions;
   Parts(world::World w, MotionLimits limits)
       : world(std::move(w)),
-        motions(world, table(), {}, mechanics, agenda, announce, {kSecond, 500 * kMillisecond},
-                limits) {}
+        motions(world, table(), {}, mechanics, agenda, announce,
+                ActuationTimes::fixed(500 * kMillisecond, kSecond), limits) {}
 };
 
 TEST(Invariants, AHelperThatLetsGoWhileTheMobilePassesIsCaught) {

@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+"""The plot of `datomsim actuators compare` (docs/actuators.md, "The paper's experiment by
+combination and size"): energy per motion and makespan against the module's radius, one line per
+combination, both axes logarithmic.
+
+    scripts/actuators-plot.py DIR/compare.csv -o DIR/compare.png
+
+A run that failed is drawn as a red cross.
+"""
+import argparse
+import csv
+import os
+import sys
+import tempfile
+
+
+def read_rows(path):
+    try:
+        with open(path, newline="") as handle:
+            rows = list(csv.DictReader(handle))
+    except OSError as error:
+        raise SystemExit(f"actuators-plot: {path}: {error.strerror}")
+    needed = {"combination", "radius_m", "makespan_s", "energy_per_motion_J", "failure"}
+    if not rows or not needed <= set(rows[0]):
+        raise SystemExit(f"actuators-plot: {path}: not a compare.csv of datomsim actuators compare "
+                         f"(expected the columns {', '.join(sorted(needed))})")
+    return rows
+
+
+def plot(rows, path):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        raise SystemExit("actuators-plot: needs matplotlib (Debian: python3-matplotlib; "
+                         "scripts/install-deps.sh installs it)")
+    figure, (energy, makespan) = plt.subplots(1, 2, figsize=(11, 4.5), dpi=120)
+    combinations = list(dict.fromkeys(r["combination"] for r in rows))
+    for combination in combinations:
+        mine = sorted((float(r["radius_m"]), r) for r in rows if r["combination"] == combination)
+        radii = [radius for radius, _ in mine]
+        energy.plot(radii, [float(r["energy_per_motion_J"]) for _, r in mine], marker="o",
+                    label=combination)
+        makespan.plot(radii, [float(r["makespan_s"]) for _, r in mine], marker="o",
+                      label=combination)
+        for radius, r in mine:
+            if r["failure"]:
+                energy.scatter([radius], [float(r["energy_per_motion_J"])], marker="x",
+                               color="red", zorder=3)
+                makespan.scatter([radius], [float(r["makespan_s"])], marker="x", color="red",
+                                 zorder=3)
+    for axes, label in ((energy, "energy per motion (J)"), (makespan, "makespan (s)")):
+        axes.set_xscale("log")
+        axes.set_yscale("log")
+        axes.set_xlabel("module radius r (m)")
+        axes.set_ylabel(label)
+        axes.grid(True, which="both", alpha=0.3)
+    energy.set_title("Energy per motion")
+    makespan.set_title("Makespan")
+    makespan.legend(fontsize=7)
+    figure.tight_layout()
+    # Written whole or not at all.
+    folder = os.path.dirname(os.path.abspath(path))
+    descriptor, temporary = tempfile.mkstemp(suffix=".png", dir=folder)
+    os.close(descriptor)
+    try:
+        figure.savefig(temporary)
+        os.replace(temporary, path)
+    except BaseException:
+        os.unlink(temporary)
+        raise
+    print(f"wrote {path}", file=sys.stderr)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("csv")
+    parser.add_argument("-o", "--output", required=True)
+    options = parser.parse_args()
+    if os.path.abspath(options.output) == os.path.abspath(options.csv):
+        raise SystemExit(f"actuators-plot: -o {options.output} would overwrite the CSV it reads")
+    plot(read_rows(options.csv), options.output)
+
+
+if __name__ == "__main__":
+    main()

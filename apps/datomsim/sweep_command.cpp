@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "arguments.h"
 #include "commands.h"
 #include "export/viewer_page.h"
 
@@ -53,7 +54,7 @@ void addSweepCommand(CLI::App& app, const Reporter& reporter) {
   command->add_option("-o,--out", args->out, "The results, a .csv file (resumed when it exists)")
       ->required();
   command->add_option("--workers", args->workers, "Processes on this machine (default: every core)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   command->add_option("--scheduler", args->scheduler,
                       "A Dask scheduler's address (tcp://host:8786) to run the cases on");
   addExample(*command, "sweep scenes/sweep-reshape.json -o sweep.csv --workers 2");

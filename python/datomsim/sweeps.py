@@ -33,6 +33,7 @@ import importlib.util
 import itertools
 import json
 import os
+import stat
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -40,6 +41,41 @@ from typing import Any, Iterable, Iterator, Optional
 
 CELL_KEYS = {"size", "floor", "grid", "goal", "start", "root", "origin"}
 GENERATORS = {"box", "arch", "random", "reshape"}
+# The most runs a spec may make: counted before any case is built (docs/limits.md).
+MAX_CASES = 1_000_000
+LARGEST_SEED = 2**64 - 1
+
+
+def _integer(value: Any) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
+
+
+def _number(value: Any) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def _scalar(value: Any) -> bool:
+    return isinstance(value, (str, int, float))
+
+
+# run()'s keywords a spec may give, each with what its value must be (None is the default).
+# The seed is the spec's "seeds"; a trace has no place in a row.
+RUN_KEYWORDS = {
+    **{key: (lambda v: _is_cell(v), "a cell x,y,z") for key in ("goal", "start", "root")},
+    **{key: (lambda v: isinstance(v, str), "a string")
+       for key in ("rules", "module", "rolling", "target")},
+    **{key: (lambda v: isinstance(v, bool), "true or false")
+       for key in ("attachment", "connectivity")},
+    **{key: (_number, "a number")
+       for key in ("delay_ms", "jitter_ms", "timeout", "until", "radius", "thickness",
+                   "density", "solid_fraction", "young_modulus", "poisson_ratio",
+                   "latch_force", "latch_moment")},
+    **{key: (_integer, "an integer") for key in ("max_motions", "load_region")},
+    "params": (lambda v: isinstance(v, dict) and all(isinstance(k, str) and _scalar(x)
+                                                     for k, x in v.items()),
+               "an object of numbers, strings and booleans"),
+    "gravity": (lambda v: isinstance(v, (bool, str)), "true, false, \"on\" or \"off\""),
+}
 # What every row has after its inputs, in this order.
 OUTCOME_COLUMNS = [
     "success",
@@ -89,19 +125,62 @@ def _expand(entry: dict) -> list[dict]:
             for combination in itertools.product(*(_choices(k, entry[k]) for k in keys))]
 
 
+def _count(entry: dict) -> int:
+    """How many combinations _expand would make, without making them."""
+    count = 1
+    for key, value in entry.items():
+        count *= len(_choices(key, value))
+    return count
+
+
+def _check_run_keywords(where: str, entry: dict, skip: tuple = ()) -> None:
+    """Refuses a key run() does not take and a value not of its type, before anything runs."""
+    for key, value in entry.items():
+        if key in skip:
+            continue
+        if key not in RUN_KEYWORDS:
+            raise SpecError(f"{where}: unknown key {key} (known: {', '.join(sorted(RUN_KEYWORDS))}"
+                            "; the seed is the spec's \"seeds\")")
+        accepts, expected = RUN_KEYWORDS[key]
+        for choice in _choices(key, value):
+            if choice is not None and not accepts(choice):
+                raise SpecError(f"{where}: {key} {json.dumps(choice)}: {expected}")
+
+
+def _check_generator_keys(entry: dict) -> None:
+    import inspect
+
+    import datomsim
+
+    function = {"box": datomsim.box, "arch": datomsim.arch, "random": datomsim.random_scene,
+                "reshape": datomsim.reshape}[entry["generate"]]
+    taken = set(inspect.signature(function).parameters)
+    for key in entry:
+        if key != "generate" and key not in taken:
+            raise SpecError(f"scenes: generate {entry['generate']} takes no key {key} (it takes "
+                            f"{', '.join(sorted(taken))})")
+
+
 def _seeds(spec: dict) -> list[int]:
     seeds = spec.get("seeds", [1])
     if isinstance(seeds, dict):
         unknown = set(seeds) - {"from", "count"}
-        if unknown or "count" not in seeds:
-            raise SpecError(f'seeds: {json.dumps(seeds)}: write {{"from": 1, "count": N}} or a list')
         start = seeds.get("from", 1)
-        return list(range(start, start + seeds["count"]))
-    if isinstance(seeds, int):
+        count = seeds.get("count")
+        if unknown or not _integer(count) or not _integer(start):
+            raise SpecError(f'seeds: {json.dumps(seeds)}: write {{"from": 1, "count": N}} or a list')
+        if count < 1 or count > MAX_CASES:
+            raise SpecError(f"seeds: count {count}: 1 to {MAX_CASES:,}")
+        if start < 0 or start + count - 1 > LARGEST_SEED:
+            raise SpecError(f"seeds: from {start}: seeds are 0 to {LARGEST_SEED}")
+        return list(range(start, start + count))
+    if _integer(seeds) and 0 <= seeds <= LARGEST_SEED:
         return [seeds]
-    if isinstance(seeds, list) and all(isinstance(s, int) and s >= 0 for s in seeds):
+    if isinstance(seeds, list) and seeds and all(_integer(s) and 0 <= s <= LARGEST_SEED
+                                                 for s in seeds):
         return seeds
-    raise SpecError(f"seeds: {json.dumps(seeds)}: a list of integers 0 or more, or from/count")
+    raise SpecError(f"seeds: {json.dumps(seeds)}: a list of integers 0 to {LARGEST_SEED}, or "
+                    "from/count")
 
 
 def cases(spec: dict) -> list[dict]:
@@ -116,23 +195,41 @@ def cases(spec: dict) -> list[dict]:
     for key in ("scenes", "programs"):
         if not isinstance(spec.get(key), list) or not spec[key]:
             raise SpecError(f"{key}: a non-empty list is needed")
-    scenes = []
+    scene_count = 0
     for entry in spec["scenes"]:
         if not isinstance(entry, dict) or ("file" in entry) == ("generate" in entry):
             raise SpecError(f"scenes: {json.dumps(entry)} needs one of \"file\" or \"generate\"")
-        if "generate" in entry and entry["generate"] not in GENERATORS:
-            raise SpecError(f"scenes: generate {json.dumps(entry['generate'])} is not one of "
-                            f"{', '.join(sorted(GENERATORS))}")
-        scenes.extend(_expand(entry))
-    programs = []
+        if "generate" in entry:
+            if not isinstance(entry["generate"], str) or entry["generate"] not in GENERATORS:
+                raise SpecError(f"scenes: generate {json.dumps(entry['generate'])} is not one of "
+                                f"{', '.join(sorted(GENERATORS))}")
+            _check_generator_keys(entry)
+        elif len(entry) > 1 or not isinstance(entry["file"], str):
+            raise SpecError(f"scenes: {json.dumps(entry)}: a file is {{\"file\": PATH}} alone")
+        scene_count += _count(entry)
+    program_count = 0
     for entry in spec["programs"]:
         if not isinstance(entry, dict) or "program" not in entry:
             raise SpecError(f"programs: {json.dumps(entry)} needs a \"program\"")
-        programs.extend(_expand(entry))
-    parameters = _expand(spec.get("parameters", {}))
+        for name in _choices("program", entry["program"]):
+            if not isinstance(name, str):
+                raise SpecError(f"programs: program {json.dumps(name)}: a string")
+        _check_run_keywords("programs", entry, skip=("program",))
+        program_count += _count(entry)
+    chosen_parameters = spec.get("parameters", {})
+    if not isinstance(chosen_parameters, dict):
+        raise SpecError("parameters: an object of run()'s keywords")
+    _check_run_keywords("parameters", chosen_parameters)
+    seeds = _seeds(spec)
+    total = scene_count * program_count * _count(chosen_parameters) * len(seeds)
+    if total > MAX_CASES:
+        raise SpecError(f"the spec makes {total:,} runs, more than the {MAX_CASES:,} a sweep may "
+                        "hold (docs/limits.md): split it")
+    scenes = [scene for entry in spec["scenes"] for scene in _expand(entry)]
+    programs = [program for entry in spec["programs"] for program in _expand(entry)]
+    parameters = _expand(chosen_parameters)
     found = []
-    for scene, program, chosen, seed in itertools.product(scenes, programs, parameters,
-                                                          _seeds(spec)):
+    for scene, program, chosen, seed in itertools.product(scenes, programs, parameters, seeds):
         case = {"scene": scene, "program": program, "parameters": chosen, "seed": seed}
         case["case"] = hashlib.sha1(json.dumps(case, sort_keys=True).encode()).hexdigest()[:12]
         found.append(case)
@@ -254,6 +351,25 @@ def _results(todo: list[dict], workers: Optional[int], scheduler: Optional[str],
             yield future.result()
 
 
+def read_spec(path: str) -> Any:
+    """The JSON value of a spec file; SpecError naming the file (and line) when it is not one."""
+    try:
+        if not stat.S_ISREG(os.stat(path).st_mode):
+            raise SpecError(f"{path}: not a regular file")
+        with open(path, encoding="utf-8") as file:
+            return json.load(file)
+    except OSError as error:
+        raise SpecError(f"{path}: {error.strerror}") from None
+    except json.JSONDecodeError as error:
+        raise SpecError(f"{path}: line {error.lineno}: {error.msg}") from None
+    except UnicodeDecodeError as error:
+        raise SpecError(f"{path}: not UTF-8 text (byte {error.start}: {error.reason})") from None
+    except RecursionError:
+        raise SpecError(f"{path}: nested too deeply for a spec") from None
+    except MemoryError:
+        raise SpecError(f"{path}: too large to read") from None
+
+
 def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None,
           scheduler: Optional[str] = None, base: Optional[str] = None,
           quiet: bool = True) -> list[dict]:
@@ -267,16 +383,11 @@ def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None
     """
     if isinstance(spec, (str, os.PathLike)):
         path = os.fspath(spec)
-        try:
-            with open(path, encoding="utf-8") as file:
-                loaded = json.load(file)
-        except OSError as error:
-            raise SpecError(f"{path}: {error.strerror}") from None
-        except json.JSONDecodeError as error:
-            raise SpecError(f"{path}: line {error.lineno}: {error.msg}") from None
+        spec = read_spec(path)
         base = base or os.path.dirname(os.path.abspath(path))
-        spec = loaded
     base = base or os.getcwd()
+    if workers is not None and (not _integer(workers) or workers < 1):
+        raise SpecError(f"workers {workers!r}: a number of processes, 1 or more")
     all_cases = cases(spec)
     columns = _columns(all_cases)
     parquet = None
@@ -296,8 +407,10 @@ def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None
     bar = _progress(len(all_cases), len(all_cases) - len(todo), quiet)
     writer = None
     file = None
+    created = False
     if out is not None:
-        fresh = not os.path.exists(out) or os.path.getsize(out) == 0
+        created = not os.path.exists(out)
+        fresh = created or os.path.getsize(out) == 0
         if not fresh:
             with open(out, newline="", encoding="utf-8") as existing:
                 header = next(csv.reader(existing), [])
@@ -317,6 +430,15 @@ def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None
             rows.append(row)
             if bar is not None:
                 bar.update()
+    except Exception:
+        # A sweep that fails leaves no file of its own behind; one stopped (Ctrl-C) keeps its
+        # rows, to go on from.
+        if file is not None:
+            file.close()
+            file = None
+            if created:
+                os.remove(out)
+        raise
     finally:
         if bar is not None:
             bar.close()
@@ -328,7 +450,12 @@ def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None
         import pandas
 
         partial = parquet + ".partial"
-        pandas.DataFrame(rows, columns=columns).to_parquet(partial, index=False)
+        try:
+            pandas.DataFrame(rows, columns=columns).to_parquet(partial, index=False)
+        except BaseException:
+            if os.path.exists(partial):
+                os.remove(partial)
+            raise
         os.replace(partial, parquet)
     return rows
 
@@ -364,12 +491,20 @@ def main(argv: Optional[Iterable[str]] = None) -> int:
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     arguments = parser.parse_args(list(argv) if argv is not None else None)
     if arguments.workers is not None and arguments.workers < 1:
-        parser.error(f"--workers {arguments.workers}: 1 or more")
+        # The command line's message (datomsim sweep --workers).
+        print(f"datomsim sweep: error: --workers: must be a finite number > 0, got "
+              f"{arguments.workers}", file=sys.stderr)
+        return 1
     try:
         rows = sweep(arguments.spec, arguments.out, workers=arguments.workers,
                      scheduler=arguments.scheduler, quiet=arguments.quiet)
     except (SpecError, OSError) as error:
         print(f"datomsim sweep: error: {error}", file=sys.stderr)
+        return 1
+    except (ValueError, TypeError, RecursionError, MemoryError) as error:
+        # What the spec made happen (datomsim.Error is a ValueError): named, not a traceback.
+        print(f"datomsim sweep: error: {arguments.spec}: {type(error).__name__}: {error}",
+              file=sys.stderr)
         return 1
     failed = sum(1 for row in rows if not row.get("success"))
     if not arguments.quiet:

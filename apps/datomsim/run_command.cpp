@@ -92,8 +92,7 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
       ->capture_default_str();
   command->add_option("--max-motions", args->maxMotions,
                       "Motions in flight at once; requests beyond wait in request order "
-                      "(default: no limit; 1 gives the sequential baseline; checked by "
-                      "frontend::checkMaxMotions, as Python's max_motions is)");
+                      "(default: no limit; 1 gives the sequential baseline)");
   command->add_option("--target", args->target,
                       "Take the target from this scene file (its modules are ignored) instead of "
                       "the scene's own (reconfigure)");

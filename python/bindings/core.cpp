@@ -238,7 +238,7 @@ bool runKeyword(frontend::RunArguments& args, const std::string& name, const py:
     (name == "timeout" ? args.timeoutS : args.untilS) = numberArgument(argument, value);
   } else if (name == "max_motions") {
     // The range is the frontend's (1 or more), with the command line's message.
-    args.maxMotions = int(integerArgument(argument, value, INT32_MIN, INT32_MAX));
+    args.maxMotions = integerArgument(argument, value, INT64_MIN, INT64_MAX);
   } else if (name == "trace") {
     args.wantTrace = booleanArgument(argument, value);
   } else if (name == "load_region") {

@@ -2,7 +2,6 @@
 with what was expected, the command line's refusals with its messages, sizes bounded before the
 work starts; then hypothesis over every public function."""
 
-import os
 
 import numpy as np
 import pytest
@@ -27,6 +26,8 @@ def arch():
     (lambda a: datomsim.moves(a, at=(6.5, 5, 2)), "moves(): at must be three integers"),
     (lambda a: datomsim.run(a, "follow-gradient", max_motions=10**30, **WALK),
      "run(): max_motions 1000000000000000000000000000000"),
+    (lambda a: datomsim.run(a, "follow-gradient", max_motions=10**12, **WALK),
+     "--max-motions: at most 2147483647, got 1000000000000"),
     (lambda a: datomsim.run(a, "follow-gradient", max_motions=1.5, **WALK),
      "run(): max_motions must be an integer, got float"),
     (lambda a: datomsim.run(a, "follow-gradient", max_motions="2", **WALK),

@@ -44,7 +44,7 @@ std::optional<py::int_> integerOf(const py::handle& value) {
 }  // namespace
 
 std::string Argument::named() const {
-  return fmt::format("{}(): {}", function, name);
+  return fmt::format("{}: {}", function, name);
 }
 
 std::string typeName(const py::handle& value) {

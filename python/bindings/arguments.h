@@ -17,7 +17,8 @@ namespace datomsim::python {
 
 namespace py = pybind11;
 
-// Where an argument goes: the function ("run") and the argument's name ("max_motions").
+// Where an argument goes: the function as Python calls it ("run()") and the argument's name
+// ("max_motions").
 struct Argument {
   std::string function;
   std::string name;

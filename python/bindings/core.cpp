@@ -73,11 +73,11 @@ py::dict reach(const py::object& on, const py::object& goal, const py::object& s
                const py::object& rules, const py::object& attachment,
                const py::object& connectivity, const py::object& module,
                const py::object& rolling) {
-  const Scene& scene = sceneArgument({"reach", "scene"}, on);
-  const Cell at = cellArgument({"reach", "goal"}, goal, "--goal");
-  const std::optional<Cell> from = optionalCell({"reach", "start"}, start, "--start");
+  const Scene& scene = sceneArgument({"reach()", "scene"}, on);
+  const Cell at = cellArgument({"reach()", "goal"}, goal, "--goal");
+  const std::optional<Cell> from = optionalCell({"reach()", "start"}, start, "--start");
   const frontend::MotionChoice model =
-      motionChoice("reach", scene, rules, attachment, connectivity, module, rolling);
+      motionChoice("reach()", scene, rules, attachment, connectivity, module, rolling);
   const frontend::ReachOutput reached = frontend::reachOnScene(scene.scene(), at, from, model);
   const auto sorted = reached.map.sorted();
   std::vector<Cell> cells;
@@ -100,8 +100,8 @@ py::dict reach(const py::object& on, const py::object& goal, const py::object& s
 std::string moves(const py::object& on, const py::object& at, const py::object& rules,
                   const py::object& attachment, const py::object& module,
                   const py::object& rolling) {
-  const Scene& scene = sceneArgument({"moves", "scene"}, on);
-  const Cell cell = cellArgument({"moves", "at"}, at, "--at");
+  const Scene& scene = sceneArgument({"moves()", "scene"}, on);
+  const Cell cell = cellArgument({"moves()", "at"}, at, "--at");
   const world::World& world = scene.scene().world;
   if (!world.isInside(cell)) {
     throw UsageError("--at " + geometry::toString(cell) + " " + world.bounds().whyOutside(cell));
@@ -109,7 +109,7 @@ std::string moves(const py::object& on, const py::object& at, const py::object& 
   const world::Module* mobile = world.moduleAt(cell);
   const motion::Mobile where{cell, mobile ? std::optional(mobile->id) : std::nullopt};
   const frontend::MotionChoice model =
-      motionChoice("moves", scene, rules, attachment, py::bool_(false), module, rolling);
+      motionChoice("moves()", scene, rules, attachment, py::bool_(false), module, rolling);
   if (model.kind == world::ModuleKind::kCatom3D) {
     const catom3d::RollTable rolls;
     return frontend::rollsJson(cell, catom3d::evaluateAll(world, rolls, where, model.rolling),
@@ -146,7 +146,7 @@ std::string vectorText(const Argument& argument, const py::handle& value) {
 
 // The JSON text of `loads --out`; the pictures asked for written as the command writes them.
 std::string loads(const py::object& on, const py::dict& options) {
-  const Scene& scene = sceneArgument({"loads", "scene"}, on);
+  const Scene& scene = sceneArgument({"loads()", "scene"}, on);
   frontend::LoadsArguments args;
   elastic::LoadParameters& p = args.parameters;
   const std::vector<std::pair<std::string, double*>> numbers = loadParameterKeywords(p);
@@ -159,15 +159,15 @@ std::string loads(const py::object& on, const py::dict& options) {
     const auto number = std::find_if(numbers.begin(), numbers.end(),
                                      [&](const auto& entry) { return entry.first == name; });
     if (number != numbers.end()) {
-      *number->second = numberArgument({"loads", name}, value);
+      *number->second = numberArgument({"loads()", name}, value);
     } else if (name == "gravity") {
       // Checked as the command line checks --gravity, with its message.
-      p.gravity = frontend::parseVector("--gravity", vectorText({"loads", "gravity"}, value));
+      p.gravity = frontend::parseVector("--gravity", vectorText({"loads()", "gravity"}, value));
     } else if (name == "top") {
-      args.top = int(integerArgument({"loads", "top"}, value, INT32_MIN, INT32_MAX));
+      args.top = int(integerArgument({"loads()", "top"}, value, INT32_MIN, INT32_MAX));
     } else if (name == "view" || name == "solver" || name == "png" || name == "svg" ||
                name == "name") {
-      const std::string text = stringArgument({"loads", name}, value);
+      const std::string text = stringArgument({"loads()", name}, value);
       if (name == "view") args.view = text;
       if (name == "solver") solver = text;
       if (name == "png") args.png = text;
@@ -200,7 +200,7 @@ std::string loads(const py::object& on, const py::dict& options) {
 
 // A program parameter's value as `--param KEY=VALUE` gives it: a number, a string or a bool.
 std::string parameterText(const std::string& key, const py::handle& value) {
-  const Argument argument{"run", "params' " + key};
+  const Argument argument{"run()", "params' " + key};
   if (PyBool_Check(value.ptr())) return value.ptr() == Py_True ? "true" : "false";
   if (PyUnicode_Check(value.ptr())) return stringArgument(argument, value);
   if (PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr())) {
@@ -213,7 +213,7 @@ std::string parameterText(const std::string& key, const py::handle& value) {
 // One of run()'s keywords into the command line's arguments; false when `name` is none of
 // them.
 bool runKeyword(frontend::RunArguments& args, const std::string& name, const py::handle& value) {
-  const Argument argument{"run", name};
+  const Argument argument{"run()", name};
   if (name == "goal" || name == "start" || name == "root") {
     const Cell cell = cellArgument(argument, value, "--" + name);
     (name == "goal"    ? args.goal
@@ -258,7 +258,7 @@ bool runKeyword(frontend::RunArguments& args, const std::string& name, const py:
       throw py::type_error(fmt::format("run(): params must be a dict, got {}", typeName(value)));
     }
     for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
-      const std::string text = stringArgument({"run", "a key of params"}, key);
+      const std::string text = stringArgument({"run()", "a key of params"}, key);
       args.parameters.push_back(text + "=" + parameterText(text, item));
     }
   } else {
@@ -270,25 +270,25 @@ bool runKeyword(frontend::RunArguments& args, const std::string& name, const py:
 // (the JSON text of `run --out`, the trace or None, the failure or None).
 std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> run(
     const py::object& on, const py::object& name, const py::dict& options) {
-  const Scene& scene = sceneArgument({"run", "scene"}, on);
+  const Scene& scene = sceneArgument({"run()", "scene"}, on);
   frontend::RunArguments args;
-  args.program = stringArgument({"run", "program"}, name);
+  args.program = stringArgument({"run()", "program"}, name);
   const std::vector<std::pair<std::string, double*>> loadNumbers =
       loadParameterKeywords(args.loads);
   std::string sceneName = scene.scene().name.value_or("a scene from Python");
   for (const auto& [key, value] : options) {
-    const std::string option = stringArgument({"run", "a keyword"}, key);
+    const std::string option = stringArgument({"run()", "a keyword"}, key);
     if (value.is_none()) continue;
     const auto loadNumber = std::find_if(loadNumbers.begin(), loadNumbers.end(),
                                          [&](const auto& entry) { return entry.first == option; });
     if (loadNumber != loadNumbers.end()) {
       // The load model's, named as the command line's options for the shared refusals.
-      *loadNumber->second = numberArgument({"run", option}, value);
+      *loadNumber->second = numberArgument({"run()", option}, value);
       std::string flag = "--" + option;
       std::replace(flag.begin(), flag.end(), '_', '-');
       args.loadOptionsGiven.push_back(flag);
     } else if (option == "scene_name") {
-      sceneName = stringArgument({"run", option}, value);
+      sceneName = stringArgument({"run()", option}, value);
     } else if (!runKeyword(args, option, value)) {
       throw UsageError(
           fmt::format("run: unknown option {} (known: goal, start, rules, "
@@ -308,10 +308,11 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
 // The JSON text of `geometry --json`; a fraction outside 0..1 refused as the option is.
 std::string geometryOf(const py::object& radiusValue, const py::object& thicknessValue,
                        const py::object& fractionValue) {
-  const double radius = numberArgument({"geometry", "radius"}, radiusValue);
-  const double thickness = numberArgument({"geometry", "thickness"}, thicknessValue);
+  const double radius = numberArgument({"geometry()", "radius"}, radiusValue);
+  const double thickness = numberArgument({"geometry()", "thickness"}, thicknessValue);
   std::optional<double> fraction;
-  if (!fractionValue.is_none()) fraction = numberArgument({"geometry", "fraction"}, fractionValue);
+  if (!fractionValue.is_none())
+    fraction = numberArgument({"geometry()", "fraction"}, fractionValue);
   if (fraction && !(*fraction >= 0 && *fraction <= 1)) {
     throw UsageError(fmt::format("--fraction: Value {} not in range [0 - 1]", *fraction));
   }
@@ -320,9 +321,9 @@ std::string geometryOf(const py::object& radiusValue, const py::object& thicknes
 
 Scene box(const py::object& size, const py::object& origin, const py::object& upright) {
   scene::BoxOptions options;
-  options.origin = cellArgument({"box", "origin"}, origin, "--origin");
-  options.upright = booleanArgument({"box", "upright"}, upright);
-  const geometry::Cell cells = cellArgument({"box", "size"}, size, "--size");
+  options.origin = cellArgument({"box()", "origin"}, origin, "--origin");
+  options.upright = booleanArgument({"box()", "upright"}, upright);
+  const geometry::Cell cells = cellArgument({"box()", "size"}, size, "--size");
   return sceneOf(frontend::unwrap(scene::box(cells, options)),
                  fmt::format("box {}x{}x{}", cells.x, cells.y, cells.z));
 }
@@ -330,16 +331,16 @@ Scene box(const py::object& size, const py::object& origin, const py::object& up
 Scene randomScene(const py::object& countValue, const py::object& seedValue,
                   const py::object& grid) {
   scene::RandomOptions options;
-  options.gridSize = optionalCell({"random_scene", "grid"}, grid, "--grid");
-  const auto count = size_t(integerArgument({"random_scene", "count"}, countValue, 0, INT64_MAX));
-  const uint64_t seed = unsignedArgument({"random_scene", "seed"}, seedValue);
+  options.gridSize = optionalCell({"random_scene()", "grid"}, grid, "--grid");
+  const auto count = size_t(integerArgument({"random_scene()", "count"}, countValue, 0, INT64_MAX));
+  const uint64_t seed = unsignedArgument({"random_scene()", "seed"}, seedValue);
   return sceneOf(frontend::unwrap(scene::random(seed, count, options)),
                  fmt::format("random, {} modules, seed {}", count, seed));
 }
 
 // A reshape case's floor: two integers (or the command line's text "X,Y").
 std::string floorText(const py::object& floor) {
-  const Argument argument{"reshape", "floor"};
+  const Argument argument{"reshape()", "floor"};
   if (PyUnicode_Check(floor.ptr())) return stringArgument(argument, floor);
   if (!PySequence_Check(floor.ptr()) || PySequence_Size(floor.ptr()) != 2) {
     PyErr_Clear();
@@ -356,14 +357,14 @@ Scene reshape(const py::object& kase, const py::object& length, const py::object
               const py::object& modules, const py::object& seed, const py::object& side,
               const py::object& base, const py::object& height) {
   const auto integer = [](const char* name, const py::object& value) {
-    return int(integerArgument({"reshape", name}, value, INT32_MIN, INT32_MAX));
+    return int(integerArgument({"reshape()", name}, value, INT32_MIN, INT32_MAX));
   };
   frontend::ReshapeArguments args;
-  args.kase = stringArgument({"reshape", "case"}, kase);
+  args.kase = stringArgument({"reshape()", "case"}, kase);
   args.length = integer("length", length);
   args.floor = floorText(floor);
   args.modules = integer("modules", modules);
-  args.seed = std::to_string(unsignedArgument({"reshape", "seed"}, seed));
+  args.seed = std::to_string(unsignedArgument({"reshape()", "seed"}, seed));
   args.side = integer("side", side);
   args.base = integer("base", base);
   args.height = integer("height", height);
@@ -410,7 +411,7 @@ PYBIND11_MODULE(_core, module) {
   module.def(
       "load_scene",
       [](const py::object& path) {
-        const std::filesystem::path file = pathArgument({"load_scene", "path"}, path);
+        const std::filesystem::path file = pathArgument({"load_scene()", "path"}, path);
         return Scene(frontend::unwrap(io::readScene(file)));
       },
       py::arg("path"), "Read a .json or VisibleSim .xml scene file");
@@ -419,7 +420,7 @@ PYBIND11_MODULE(_core, module) {
   module.def(
       "arch",
       [](const py::object& value) {
-        const auto hole = int(integerArgument({"arch", "hole"}, value, INT32_MIN, INT32_MAX));
+        const auto hole = int(integerArgument({"arch()", "hole"}, value, INT32_MIN, INT32_MAX));
         return sceneOf(frontend::unwrap(scene::paperArch(hole)),
                        fmt::format("paper arch, hole {} high", hole));
       },

@@ -25,7 +25,7 @@ Color colorArgument(const py::object& color) {
   for (size_t k = 0; k < 3; ++k) {
     const py::object channel = channels[k];
     if (!PyIndex_Check(channel.ptr()) || PyBool_Check(channel.ptr())) throw refuse();
-    rgb[k] = integerArgument({"add", "color"}, channel, INT64_MIN, INT64_MAX);
+    rgb[k] = integerArgument({"add()", "color"}, channel, INT64_MIN, INT64_MAX);
   }
   for (const int64_t channel : rgb) {
     if (channel < 0 || channel > 255) {

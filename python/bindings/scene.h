@@ -98,8 +98,9 @@ class Scene {
 
   // Adds a module (the next free id) and latches it to its neighbours; returns its id.
   uint32_t add(const py::object& cell, const py::object& orientation, const py::object& color) {
-    const Cell at = cellArgument({"add", "cell"}, cell, "cell");
-    const auto number = integerArgument({"add", "orientation"}, orientation, INT32_MIN, INT32_MAX);
+    const Cell at = cellArgument({"add()", "cell"}, cell, "cell");
+    const auto number =
+        integerArgument({"add()", "orientation"}, orientation, INT32_MIN, INT32_MAX);
     const auto code = geometry::Orientation::fromCode(int(number));
     if (!code) throw frontend::UsageError(fmt::format("orientation {}: a code in 0..23", number));
     const Color rgb = colorArgument(color);
@@ -109,16 +110,16 @@ class Scene {
     return id.value;
   }
   void remove(const py::object& id) {
-    frontend::check(scene_.world.remove(idArgument("remove", id)));
+    frontend::check(scene_.world.remove(idArgument("remove()", id)));
   }
   void move(const py::object& id, const py::object& cell) {
-    frontend::check(
-        scene_.world.move(idArgument("move", id), cellArgument({"move", "cell"}, cell, "cell")));
+    frontend::check(scene_.world.move(idArgument("move()", id),
+                                      cellArgument({"move()", "cell"}, cell, "cell")));
     scene_.world.latchAllNeighbours();
   }
   std::optional<uint32_t> moduleAt(const py::object& cell) const {
     const world::Module* m =
-        scene_.world.moduleAt(cellArgument({"module_at", "cell"}, cell, "cell"));
+        scene_.world.moduleAt(cellArgument({"module_at()", "cell"}, cell, "cell"));
     if (m == nullptr) return std::nullopt;
     return m->id.value;
   }
@@ -151,7 +152,7 @@ class Scene {
   }
 
   void save(const py::object& where) const {
-    const std::filesystem::path path = pathArgument({"save", "path"}, where);
+    const std::filesystem::path path = pathArgument({"save()", "path"}, where);
     io::Scene written = scene_;
     // Python says nothing on standard error: the grid is in the file, for Python to read.
     frontend::declareGridForVisibleSim(written, path.string(), frontend::Reporter(/*quiet=*/true));

@@ -2,7 +2,9 @@
 # Builds the fuzz harnesses (fuzz/) with Clang's libFuzzer, AddressSanitizer and
 # UndefinedBehaviorSanitizer, and runs each for SECONDS (default 30) from its corpus in fuzz/corpus
 # (copied: new inputs stay in the build folder). A crash, a sanitizer report or a broken property
-# stops the script with the input that caused it (build/fuzz/crashes/).
+# stops the script with the input that caused it (build/fuzz/crashes/). Then (or when FUZZER is
+# "python") hypothesis over the Python package's public functions, python/tests/test_fuzz.py, with
+# DATOMSIM_FUZZ_EXAMPLES examples each (default 2000), when the release build has the package.
 #   scripts/fuzz.sh [SECONDS] [FUZZER...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -10,8 +12,35 @@ cd "$(dirname "$0")/.."
 seconds="${1:-30}"
 shift || true
 fuzzers=("$@")
-((${#fuzzers[@]} > 0)) ||
+python_fuzz=0
+if ((${#fuzzers[@]} == 0)); then
   fuzzers=(json_scene_fuzzer xml_scene_fuzzer trace_fuzzer arguments_fuzzer actuator_design_fuzzer)
+  python_fuzz=1
+elif [[ " ${fuzzers[*]} " == *" python "* ]]; then
+  python_fuzz=1
+  read -r -a fuzzers <<< "$(printf '%s ' "${fuzzers[@]}" | sed 's/\bpython\b//g')"
+fi
+
+# Hypothesis over the Python package (docs/limits.md, "Fuzzing").
+fuzz_python() {
+  if [[ ! -d build/release/python/datomsim ]]; then
+    echo "python: not fuzzed (build/release has no Python package: scripts/build.sh release)"
+    return
+  fi
+  local examples="${DATOMSIM_FUZZ_EXAMPLES:-2000}"
+  if ! PYTHONPATH=build/release/python DATOMSIM_FUZZ_EXAMPLES="$examples" /usr/bin/python3 -m pytest \
+    -q -p no:cacheprovider python/tests/test_fuzz.py > build/fuzz/python.log 2>&1; then
+    tail -60 build/fuzz/python.log >&2
+    echo "fuzz.sh: the Python package failed its fuzzing (build/fuzz/python.log)" >&2
+    exit 1
+  fi
+  echo "python: $examples examples per function, no crash ($(tail -1 build/fuzz/python.log))"
+}
+if ((${#fuzzers[@]} == 0)); then
+  mkdir -p build/fuzz
+  fuzz_python
+  exit 0
+fi
 
 mkdir -p build
 log=build/fuzz.log
@@ -36,3 +65,4 @@ for fuzzer in "${fuzzers[@]}"; do
   runs=$(grep -o "stat::number_of_executed_units: *[0-9]*" "build/fuzz/$fuzzer.log" | grep -o "[0-9]*$")
   echo "$fuzzer: $runs runs in ${seconds} s, no crash ($(ls "$corpus" | wc -l) inputs in its corpus)"
 done
+((python_fuzz == 0)) || fuzz_python

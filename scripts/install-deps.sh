@@ -14,6 +14,8 @@ packages=(
   clang libclang-rt-dev
   # The Python package (docs/python.md): its module, and what its tests and users import.
   pybind11-dev python3-dev python3-numpy python3-pytest
+  # Hypothesis: the Python package's fuzzing (python/tests/test_fuzz.py, scripts/fuzz.sh).
+  python3-hypothesis
   # Sweeps on a Dask cluster, their progress bar and their plots.
   python3-distributed python3-tqdm python3-matplotlib
   # Shell completion is tested in both shells it is made for (docs/shell-completion.md).

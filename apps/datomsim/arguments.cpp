@@ -51,6 +51,20 @@ CLI::Validator integerAtLeast(int64_t low, const char* name) {
       name);
 }
 
+// One of `choices`, checked by the frontend as Python's keywords are (the same message).
+CLI::Validator frontendChoice(const char* option, std::span<const std::string_view> choices) {
+  std::string names;
+  for (const std::string_view choice : choices) {
+    names += fmt::format("{}{}", names.empty() ? "" : ",", choice);
+  }
+  return CLI::Validator(
+      [option, choices](std::string& text) {
+        frontend::checkChoice(option, text, choices);
+        return std::string();
+      },
+      "{" + names + "}");
+}
+
 }  // namespace
 
 const CLI::Validator kPositiveInteger = integerAtLeast(1, "INTEGER>0");
@@ -60,18 +74,18 @@ const CLI::Validator kPositive = numberAtLeast(0, true, "NUMBER>0");
 
 void addRuleOptions(CLI::App& command, RuleArguments& rules) {
   command.add_option("--rules", rules.rules, "Rule table: paper (double deformation) or strict")
-      ->check(CLI::IsMember({"paper", "strict"}))
+      ->check(frontendChoice("--rules", frontend::kRuleSets))
       ->capture_default_str();
   command
       .add_option("--attachment", rules.attachment,
                   "Refuse deformations that would make a module let go: on or off")
-      ->check(CLI::IsMember({"on", "off"}))
+      ->check(frontendChoice("--attachment", frontend::kOnOff))
       ->capture_default_str();
   command
       .add_option("--connectivity", rules.connectivity,
                   "Refuse motions and deformations that would cut modules off from the "
                   "ensemble: on or off")
-      ->check(CLI::IsMember({"on", "off"}))
+      ->check(frontendChoice("--connectivity", frontend::kOnOff))
       ->capture_default_str();
 }
 

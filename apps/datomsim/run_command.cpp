@@ -93,11 +93,9 @@ void addRunCommand(CLI::App& app, const Reporter& reporter, std::span<const Prog
       ->add_option("--jitter-ms", args->jitterMs,
                    "Extra random message delay, uniform in [0, jitter], in milliseconds")
       ->capture_default_str();
-  command
-      ->add_option("--max-motions", args->maxMotions,
-                   "Motions in flight at once; requests beyond wait in request order "
-                   "(default: no limit; 1 gives the sequential baseline)")
-      ->check(kPositive);
+  command->add_option("--max-motions", args->maxMotions,
+                      "Motions in flight at once; requests beyond wait in request order "
+                      "(default: no limit; 1 gives the sequential baseline)");
   command->add_option("--target", args->target,
                       "Take the target from this scene file (its modules are ignored) instead of "
                       "the scene's own (reconfigure)");

@@ -43,30 +43,42 @@ std::string onOff(bool on) {
   return on ? "on" : "off";
 }
 
-frontend::RuleArguments ruleArguments(const std::string& rules, bool attachment,
-                                      bool connectivity) {
-  frontend::RuleArguments arguments;
-  arguments.rules = rules;
-  arguments.attachment = onOff(attachment);
-  arguments.connectivity = onOff(connectivity);
-  return arguments;
+const Scene& sceneArgument(const Argument& argument, const py::object& value) {
+  if (!py::isinstance<Scene>(value)) {
+    throw py::type_error(
+        fmt::format("{} must be a datomsim.Scene, got {}", argument.named(), typeName(value)));
+  }
+  return value.cast<const Scene&>();
 }
 
-catom3d::RollRules rollingOf(const std::string& rolling) {
-  if (const auto rules = catom3d::rollRulesNamed(rolling)) return *rules;
-  throw frontend::UsageError("--rolling: " + rolling + " not in {symmetric,visiblesim}");
+// The module, its rules and rolls as reach and moves take them, checked by the frontend as the
+// command line's options are.
+frontend::MotionChoice motionChoice(const std::string& function, const Scene& scene,
+                                    const py::object& rules, const py::object& attachment,
+                                    const py::object& connectivity, const py::object& module,
+                                    const py::object& rolling) {
+  frontend::RuleArguments arguments;
+  arguments.rules = stringArgument({function, "rules"}, rules);
+  arguments.attachment = onOff(booleanArgument({function, "attachment"}, attachment));
+  arguments.connectivity = onOff(booleanArgument({function, "connectivity"}, connectivity));
+  const std::string rolls = stringArgument({function, "rolling"}, rolling);
+  const auto rollRules = catom3d::rollRulesNamed(rolls);
+  if (!rollRules) throw UsageError("--rolling: " + rolls + " not in {symmetric,visiblesim}");
+  return {kindOf(optionalString({function, "module"}, module), scene.scene().moduleKind),
+          arguments.options(), *rollRules};
 }
 
 // {"cells": (n, 3), "distances": (n,), "path": (p, 3), "goal": (3,)}: `reach --out` as arrays.
-py::dict reach(const Scene& scene, const py::object& goal, const py::object& start,
-               const std::string& rules, bool attachment, bool connectivity,
-               const std::optional<std::string>& module, const std::string& rolling) {
-  const Cell at = cellArgument(goal, "--goal");
-  const frontend::MotionChoice model{kindOf(module, scene.scene().moduleKind),
-                                     ruleArguments(rules, attachment, connectivity).options(),
-                                     rollingOf(rolling)};
-  const frontend::ReachOutput reached =
-      frontend::reachOnScene(scene.scene(), at, optionalCell(start, "--start"), model);
+py::dict reach(const py::object& on, const py::object& goal, const py::object& start,
+               const py::object& rules, const py::object& attachment,
+               const py::object& connectivity, const py::object& module,
+               const py::object& rolling) {
+  const Scene& scene = sceneArgument({"reach()", "scene"}, on);
+  const Cell at = cellArgument({"reach()", "goal"}, goal, "--goal");
+  const std::optional<Cell> from = optionalCell({"reach()", "start"}, start, "--start");
+  const frontend::MotionChoice model =
+      motionChoice("reach()", scene, rules, attachment, connectivity, module, rolling);
+  const frontend::ReachOutput reached = frontend::reachOnScene(scene.scene(), at, from, model);
   const auto sorted = reached.map.sorted();
   std::vector<Cell> cells;
   py::array_t<int32_t> distances{py::ssize_t(sorted.size())};
@@ -85,19 +97,19 @@ py::dict reach(const Scene& scene, const py::object& goal, const py::object& sta
 }
 
 // The JSON text of `moves --out`.
-std::string moves(const Scene& scene, const py::object& at, const std::string& rules,
-                  bool attachment, const std::optional<std::string>& module,
-                  const std::string& rolling) {
-  const Cell cell = cellArgument(at, "--at");
+std::string moves(const py::object& on, const py::object& at, const py::object& rules,
+                  const py::object& attachment, const py::object& module,
+                  const py::object& rolling) {
+  const Scene& scene = sceneArgument({"moves()", "scene"}, on);
+  const Cell cell = cellArgument({"moves()", "at"}, at, "--at");
   const world::World& world = scene.scene().world;
   if (!world.isInside(cell)) {
     throw UsageError("--at " + geometry::toString(cell) + " " + world.bounds().whyOutside(cell));
   }
   const world::Module* mobile = world.moduleAt(cell);
   const motion::Mobile where{cell, mobile ? std::optional(mobile->id) : std::nullopt};
-  const frontend::MotionChoice model{kindOf(module, scene.scene().moduleKind),
-                                     ruleArguments(rules, attachment, false).options(),
-                                     rollingOf(rolling)};
+  const frontend::MotionChoice model =
+      motionChoice("moves()", scene, rules, attachment, py::bool_(false), module, rolling);
   if (model.kind == world::ModuleKind::kCatom3D) {
     const catom3d::RollTable rolls;
     return frontend::rollsJson(cell, catom3d::evaluateAll(world, rolls, where, model.rolling),
@@ -105,17 +117,6 @@ std::string moves(const Scene& scene, const py::object& at, const std::string& r
   }
   const motion::RuleTable table;
   return frontend::movesJson(cell, motion::evaluateAll(world, table, where, model.datom));
-}
-
-// A number of loads(), or the error naming it and what it got.
-double numberArgument(const py::handle& value, const std::string& name) {
-  if (py::isinstance<py::bool_>(value) ||
-      !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value))) {
-    throw py::type_error(
-        fmt::format("loads(): {} must be a number, got {}", name,
-                    py::str(py::type::of(value).attr("__name__")).cast<std::string>()));
-  }
-  return value.cast<double>();
 }
 
 // The load model's parameters by their keywords, as `loads` and `run` take them.
@@ -136,8 +137,22 @@ std::vector<frontend::NamedPath> inputsOf(const Scene& scene) {
   return {{"scene", scene.source()}};
 }
 
+// Three numbers (x, y, z) as the command line's text "x,y,z".
+std::string vectorText(const Argument& argument, const py::handle& value) {
+  if (PyUnicode_Check(value.ptr()) || !PySequence_Check(value.ptr()) ||
+      PySequence_Size(value.ptr()) != 3) {
+    PyErr_Clear();
+    throw py::type_error(fmt::format("{} must be three numbers (x, y, z), m/s^2, got {}",
+                                     argument.named(), typeName(value)));
+  }
+  const py::sequence parts = py::reinterpret_borrow<py::sequence>(value);
+  return fmt::format("{},{},{}", numberArgument(argument, parts[0]),
+                     numberArgument(argument, parts[1]), numberArgument(argument, parts[2]));
+}
+
 // The JSON text of `loads --out`; the pictures asked for written as the command writes them.
-std::string loads(const Scene& scene, const py::dict& options) {
+std::string loads(const py::object& on, const py::dict& options) {
+  const Scene& scene = sceneArgument({"loads()", "scene"}, on);
   frontend::LoadsArguments args;
   elastic::LoadParameters& p = args.parameters;
   const std::vector<std::pair<std::string, double*>> numbers = loadParameterKeywords(p);
@@ -150,28 +165,15 @@ std::string loads(const Scene& scene, const py::dict& options) {
     const auto number = std::find_if(numbers.begin(), numbers.end(),
                                      [&](const auto& entry) { return entry.first == name; });
     if (number != numbers.end()) {
-      *number->second = numberArgument(value, name);
+      *number->second = numberArgument({"loads()", name}, value);
     } else if (name == "gravity") {
-      const auto parts = value.cast<py::sequence>();
-      if (py::isinstance<py::str>(value) || parts.size() != 3) {
-        throw py::type_error("loads(): gravity must be three numbers (x, y, z), m/s^2");
-      }
       // Checked as the command line checks --gravity, with its message.
-      p.gravity = frontend::parseVector(
-          "--gravity",
-          fmt::format("{},{},{}", numberArgument(parts[0], "gravity"),
-                      numberArgument(parts[1], "gravity"), numberArgument(parts[2], "gravity")));
+      p.gravity = frontend::parseVector("--gravity", vectorText({"loads()", "gravity"}, value));
     } else if (name == "top") {
-      if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
-        throw py::type_error("loads(): top must be an integer");
-      }
-      args.top = value.cast<int>();
+      args.top = int(integerArgument({"loads()", "top"}, value, INT32_MIN, INT32_MAX));
     } else if (name == "view" || name == "solver" || name == "png" || name == "svg" ||
                name == "name") {
-      if (!py::isinstance<py::str>(value)) {
-        throw py::type_error(fmt::format("loads(): {} must be a string", name));
-      }
-      const std::string text = value.cast<std::string>();
+      const std::string text = stringArgument({"loads()", name}, value);
       if (name == "view") args.view = text;
       if (name == "solver") solver = text;
       if (name == "png") args.png = text;
@@ -206,107 +208,113 @@ std::string loads(const Scene& scene, const py::dict& options) {
   return frontend::loadsJson(output);
 }
 
+// A program parameter's value as `--param KEY=VALUE` gives it: a number, a string or a bool.
+std::string parameterText(const std::string& key, const py::handle& value) {
+  const Argument argument{"run()", "params' " + key};
+  if (PyBool_Check(value.ptr())) return value.ptr() == Py_True ? "true" : "false";
+  if (PyUnicode_Check(value.ptr())) return stringArgument(argument, value);
+  if (PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr())) {
+    return py::str(value).cast<std::string>();
+  }
+  throw py::type_error(fmt::format("{} must be a number, a string or a bool, got {}",
+                                   argument.named(), typeName(value)));
+}
+
+// One of run()'s keywords into the command line's arguments; false when `name` is none of
+// them.
+bool runKeyword(frontend::RunArguments& args, const std::string& name, const py::handle& value) {
+  const Argument argument{"run()", name};
+  if (name == "goal" || name == "start" || name == "root") {
+    const Cell cell = cellArgument(argument, value, "--" + name);
+    (name == "goal"    ? args.goal
+     : name == "start" ? args.start
+                       : args.root) = fmt::format("{},{},{}", cell.x, cell.y, cell.z);
+  } else if (name == "rules" || name == "module" || name == "rolling") {
+    (name == "rules"    ? args.rules.rules
+     : name == "module" ? args.module
+                        : args.rolling) = stringArgument(argument, value);
+  } else if (name == "target") {
+    args.target = pathArgument(argument, value);
+  } else if (name == "attachment") {
+    args.rules.attachment = onOff(booleanArgument(argument, value));
+  } else if (name == "connectivity") {
+    args.rules.connectivity = onOff(booleanArgument(argument, value));
+    args.connectivityGiven = true;
+  } else if (name == "seed") {
+    args.seed = std::to_string(unsignedArgument(argument, value));
+  } else if (name == "delay_ms" || name == "jitter_ms") {
+    (name == "delay_ms" ? args.delayMs : args.jitterMs) = numberArgument(argument, value);
+  } else if (name == "timeout" || name == "until") {
+    (name == "timeout" ? args.timeoutS : args.untilS) = numberArgument(argument, value);
+  } else if (name == "max_motions") {
+    // The range is the frontend's (1 or more), with the command line's message.
+    args.maxMotions = integerArgument(argument, value, INT64_MIN, INT64_MAX);
+  } else if (name == "trace") {
+    args.wantTrace = booleanArgument(argument, value);
+  } else if (name == "load_region") {
+    args.loadRegion = int(integerArgument(argument, value, INT32_MIN, INT32_MAX));
+    args.loadOptionsGiven.push_back("--load-region");
+  } else if (name == "gravity") {
+    // True or "on", False or "off", or three numbers.
+    if (PyBool_Check(value.ptr())) {
+      args.gravity = value.ptr() == Py_True ? "on" : "off";
+    } else if (PyUnicode_Check(value.ptr())) {
+      args.gravity = stringArgument(argument, value);
+    } else {
+      args.gravity = vectorText(argument, value);
+    }
+  } else if (name == "params") {
+    if (!PyDict_Check(value.ptr())) {
+      throw py::type_error(fmt::format("run(): params must be a dict, got {}", typeName(value)));
+    }
+    for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
+      const std::string text = stringArgument({"run()", "a key of params"}, key);
+      args.parameters.push_back(text + "=" + parameterText(text, item));
+    }
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // (the JSON text of `run --out`, the trace or None, the failure or None).
 std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> run(
-    const Scene& scene, const std::string& program, const py::dict& options) {
+    const py::object& on, const py::object& name, const py::dict& options) {
+  const Scene& scene = sceneArgument({"run()", "scene"}, on);
   frontend::RunArguments args;
-  args.program = program;
+  args.program = stringArgument({"run()", "program"}, name);
   std::optional<std::string> tracePath;
-  const std::set<std::string> known = {
-      "goal",      "start",       "rules",  "attachment", "connectivity", "seed",       "delay_ms",
-      "jitter_ms", "max_motions", "target", "timeout",    "until",        "params",     "root",
-      "trace",     "scene_name",  "module", "rolling",    "gravity",      "load_region"};
   const std::vector<std::pair<std::string, double*>> loadNumbers =
       loadParameterKeywords(args.loads);
+  std::string sceneName = scene.scene().name.value_or("a scene from Python");
   for (const auto& [key, value] : options) {
-    const std::string name = key.cast<std::string>();
+    const std::string option = stringArgument({"run()", "a keyword"}, key);
+    if (value.is_none()) continue;
     const auto loadNumber = std::find_if(loadNumbers.begin(), loadNumbers.end(),
-                                         [&](const auto& entry) { return entry.first == name; });
-    if (!known.contains(name) && loadNumber == loadNumbers.end()) {
+                                         [&](const auto& entry) { return entry.first == option; });
+    if (loadNumber != loadNumbers.end()) {
+      // The load model's, named as the command line's options for the shared refusals.
+      *loadNumber->second = numberArgument({"run()", option}, value);
+      std::string flag = "--" + option;
+      std::replace(flag.begin(), flag.end(), '_', '-');
+      args.loadOptionsGiven.push_back(flag);
+    } else if (option == "scene_name") {
+      sceneName = stringArgument({"run()", option}, value);
+    } else if (option == "trace" && PyUnicode_Check(value.ptr())) {
+      // A path: the file to write the trace to (True: its text returned, by runKeyword).
+      tracePath = stringArgument({"run()", option}, value);
+      if (tracePath->empty()) throw UsageError("run: trace is an empty file name");
+      args.wantTrace = true;
+    } else if (!runKeyword(args, option, value)) {
       throw UsageError(
           fmt::format("run: unknown option {} (known: goal, start, rules, "
                       "attachment, connectivity, seed, delay_ms, jitter_ms, "
                       "max_motions, target, timeout, until, params, root, trace, module, "
                       "rolling, gravity, load_region, radius, thickness, density, "
                       "solid_fraction, young_modulus, poisson_ratio, latch_force, latch_moment)",
-                      name));
-    }
-    if (value.is_none()) continue;
-    // The load model's, named as the command line's options for the shared refusals.
-    if (loadNumber != loadNumbers.end()) {
-      *loadNumber->second = numberArgument(value, name);
-      std::string option = "--" + name;
-      std::replace(option.begin(), option.end(), '_', '-');
-      args.loadOptionsGiven.push_back(option);
-      continue;
-    }
-    if (name == "gravity") {
-      // True or "on", False or "off", or three numbers.
-      if (py::isinstance<py::bool_>(value)) {
-        args.gravity = value.cast<bool>() ? "on" : "off";
-      } else if (py::isinstance<py::str>(value)) {
-        args.gravity = value.cast<std::string>();
-      } else {
-        const auto parts = value.cast<py::sequence>();
-        if (parts.size() != 3) {
-          throw py::type_error(
-              "run(): gravity must be True, False, \"on\", \"off\" or three "
-              "numbers (x, y, z), m/s^2");
-        }
-        args.gravity =
-            fmt::format("{},{},{}", numberArgument(parts[0], "gravity"),
-                        numberArgument(parts[1], "gravity"), numberArgument(parts[2], "gravity"));
-      }
-      continue;
-    }
-    if (name == "load_region") {
-      if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
-        throw py::type_error("run(): load_region must be an integer");
-      }
-      args.loadRegion = value.cast<int>();
-      args.loadOptionsGiven.push_back("--load-region");
-      continue;
-    }
-    const auto cellText = [&](const char* option) {
-      const Cell cell = cellArgument(value, option);
-      return fmt::format("{},{},{}", cell.x, cell.y, cell.z);
-    };
-    if (name == "goal") args.goal = cellText("--goal");
-    if (name == "start") args.start = cellText("--start");
-    if (name == "root") args.root = cellText("--root");
-    if (name == "rules") args.rules.rules = value.cast<std::string>();
-    if (name == "attachment") args.rules.attachment = onOff(value.cast<bool>());
-    if (name == "connectivity") {
-      args.rules.connectivity = onOff(value.cast<bool>());
-      args.connectivityGiven = true;
-    }
-    if (name == "seed") args.seed = py::str(value).cast<std::string>();
-    if (name == "delay_ms") args.delayMs = value.cast<double>();
-    if (name == "jitter_ms") args.jitterMs = value.cast<double>();
-    if (name == "max_motions") args.maxMotions = value.cast<int>();
-    if (name == "target") args.target = py::str(value).cast<std::string>();
-    if (name == "timeout") args.timeoutS = value.cast<double>();
-    if (name == "until") args.untilS = value.cast<double>();
-    if (name == "trace") {
-      // True: the trace's text returned; a path: the file to write it to.
-      if (py::isinstance<py::str>(value)) {
-        tracePath = value.cast<std::string>();
-        if (tracePath->empty()) throw UsageError("run: trace is an empty file name");
-      }
-      args.wantTrace = tracePath || value.cast<bool>();
-    }
-    if (name == "module") args.module = value.cast<std::string>();
-    if (name == "rolling") args.rolling = value.cast<std::string>();
-    if (name == "params") {
-      for (const auto& [k, v] : value.cast<py::dict>()) {
-        args.parameters.push_back(py::str(k).cast<std::string>() + "=" +
-                                  py::str(v).cast<std::string>());
-      }
+                      option));
     }
   }
-  const std::string sceneName = options.contains("scene_name")
-                                    ? options["scene_name"].cast<std::string>()
-                                    : scene.scene().name.value_or("a scene from Python");
   // The trace file checked against the scene's file and the target before the run, as `run
   // --trace` is.
   std::optional<frontend::CommandFiles> files;
@@ -327,11 +335,69 @@ std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> 
 }
 
 // The JSON text of `geometry --json`; a fraction outside 0..1 refused as the option is.
-std::string geometryOf(double radius, double thickness, const std::optional<double>& fraction) {
+std::string geometryOf(const py::object& radiusValue, const py::object& thicknessValue,
+                       const py::object& fractionValue) {
+  const double radius = numberArgument({"geometry()", "radius"}, radiusValue);
+  const double thickness = numberArgument({"geometry()", "thickness"}, thicknessValue);
+  std::optional<double> fraction;
+  if (!fractionValue.is_none())
+    fraction = numberArgument({"geometry()", "fraction"}, fractionValue);
   if (fraction && !(*fraction >= 0 && *fraction <= 1)) {
     throw UsageError(fmt::format("--fraction: Value {} not in range [0 - 1]", *fraction));
   }
   return frontend::geometryJson(radius, thickness, fraction).dump();
+}
+
+Scene box(const py::object& size, const py::object& origin, const py::object& upright) {
+  scene::BoxOptions options;
+  options.origin = cellArgument({"box()", "origin"}, origin, "--origin");
+  options.upright = booleanArgument({"box()", "upright"}, upright);
+  const geometry::Cell cells = cellArgument({"box()", "size"}, size, "--size");
+  return sceneOf(frontend::unwrap(scene::box(cells, options)),
+                 fmt::format("box {}x{}x{}", cells.x, cells.y, cells.z));
+}
+
+Scene randomScene(const py::object& countValue, const py::object& seedValue,
+                  const py::object& grid) {
+  scene::RandomOptions options;
+  options.gridSize = optionalCell({"random_scene()", "grid"}, grid, "--grid");
+  const auto count = size_t(integerArgument({"random_scene()", "count"}, countValue, 0, INT64_MAX));
+  const uint64_t seed = unsignedArgument({"random_scene()", "seed"}, seedValue);
+  return sceneOf(frontend::unwrap(scene::random(seed, count, options)),
+                 fmt::format("random, {} modules, seed {}", count, seed));
+}
+
+// A reshape case's floor: two integers (or the command line's text "X,Y").
+std::string floorText(const py::object& floor) {
+  const Argument argument{"reshape()", "floor"};
+  if (PyUnicode_Check(floor.ptr())) return stringArgument(argument, floor);
+  if (!PySequence_Check(floor.ptr()) || PySequence_Size(floor.ptr()) != 2) {
+    PyErr_Clear();
+    throw py::type_error(
+        fmt::format("reshape(): floor must be two integers (x, y), got {}", typeName(floor)));
+  }
+  const py::sequence sides = py::reinterpret_borrow<py::sequence>(floor);
+  const geometry::Cell size =
+      cellArgument(argument, py::make_tuple(sides[0], sides[1], 1), "--floor");
+  return fmt::format("{},{}", size.x, size.y);
+}
+
+Scene reshape(const py::object& kase, const py::object& length, const py::object& floor,
+              const py::object& modules, const py::object& seed, const py::object& side,
+              const py::object& base, const py::object& height) {
+  const auto integer = [](const char* name, const py::object& value) {
+    return int(integerArgument({"reshape()", name}, value, INT32_MIN, INT32_MAX));
+  };
+  frontend::ReshapeArguments args;
+  args.kase = stringArgument({"reshape()", "case"}, kase);
+  args.length = integer("length", length);
+  args.floor = floorText(floor);
+  args.modules = integer("modules", modules);
+  args.seed = std::to_string(unsignedArgument({"reshape()", "seed"}, seed));
+  args.side = integer("side", side);
+  args.base = integer("base", base);
+  args.height = integer("height", height);
+  return Scene(frontend::reshapeCase(args));
 }
 
 }  // namespace
@@ -373,62 +439,27 @@ PYBIND11_MODULE(_core, module) {
 
   module.def(
       "load_scene",
-      [](const std::filesystem::path& path) {
-        return Scene(frontend::unwrap(io::readScene(path)), path.string());
+      [](const py::object& path) {
+        const std::filesystem::path file = pathArgument({"load_scene()", "path"}, path);
+        return Scene(frontend::unwrap(io::readScene(file)), file.string());
       },
       py::arg("path"), "Read a .json or VisibleSim .xml scene file");
-  module.def(
-      "box",
-      [](const py::object& size, const py::object& origin, bool upright) {
-        scene::BoxOptions options;
-        options.origin = cellArgument(origin, "--origin");
-        options.upright = upright;
-        const geometry::Cell cells = cellArgument(size, "--size");
-        return sceneOf(frontend::unwrap(scene::box(cells, options)),
-                       fmt::format("box {}x{}x{}", cells.x, cells.y, cells.z));
-      },
-      py::arg("size"), py::arg("origin") = py::make_tuple(0, 0, 0), py::arg("upright") = false,
-      "A box of modules (generate box)");
+  module.def("box", &box, py::arg("size"), py::arg("origin") = py::make_tuple(0, 0, 0),
+             py::arg("upright") = false, "A box of modules (generate box)");
   module.def(
       "arch",
-      [](int hole) {
+      [](const py::object& value) {
+        const auto hole = int(integerArgument({"arch()", "hole"}, value, INT32_MIN, INT32_MAX));
         return sceneOf(frontend::unwrap(scene::paperArch(hole)),
                        fmt::format("paper arch, hole {} high", hole));
       },
       py::arg("hole") = 2, "The paper's scene with an arch whose hole is 2 or 1 high");
+  module.def("random_scene", &randomScene, py::arg("count"), py::arg("seed") = 1,
+             py::arg("grid") = py::none(), "A random connected scene (generate random)");
   module.def(
-      "random_scene",
-      [](size_t count, uint64_t seed, const py::object& grid) {
-        scene::RandomOptions options;
-        options.gridSize = optionalCell(grid, "--grid");
-        return sceneOf(frontend::unwrap(scene::random(seed, count, options)),
-                       fmt::format("random, {} modules, seed {}", count, seed));
-      },
-      py::arg("count"), py::arg("seed") = 1, py::arg("grid") = py::none(),
-      "A random connected scene (generate random)");
-  module.def(
-      "reshape",
-      [](const std::string& kase, int length, const py::object& floor, int modules, uint64_t seed,
-         int side, int base, int height) {
-        frontend::ReshapeArguments args;
-        args.kase = kase;
-        args.length = length;
-        const geometry::Cell size = cellArgument(
-            py::isinstance<py::str>(floor)
-                ? floor
-                : py::object(py::make_tuple(floor[py::int_(0)], floor[py::int_(1)], 1)),
-            "--floor");
-        args.floor = fmt::format("{},{}", size.x, size.y);
-        args.modules = modules;
-        args.seed = std::to_string(seed);
-        args.side = side;
-        args.base = base;
-        args.height = height;
-        return Scene(frontend::reshapeCase(args));
-      },
-      py::arg("case"), py::arg("length") = 8, py::arg("floor") = py::make_tuple(12, 12),
-      py::arg("modules") = 20, py::arg("seed") = 1, py::arg("side") = 96, py::arg("base") = 0,
-      py::arg("height") = 2,
+      "reshape", &reshape, py::arg("case"), py::arg("length") = 8,
+      py::arg("floor") = py::make_tuple(12, 12), py::arg("modules") = 20, py::arg("seed") = 1,
+      py::arg("side") = 96, py::arg("base") = 0, py::arg("height") = 2,
       "A reconfiguration case (generate reshape): its scene, the shape to build as its target");
   module.def("reach", &reach, py::arg("scene"), py::arg("goal"), py::arg("start") = py::none(),
              py::arg("rules") = "paper", py::arg("attachment") = true,

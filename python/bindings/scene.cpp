@@ -10,29 +10,33 @@ namespace datomsim::python {
 
 using frontend::UsageError;
 
-Cell cellArgument(const py::handle& value, const std::string& option) {
-  if (py::isinstance<py::str>(value)) return frontend::parseCell(option, value.cast<std::string>());
-  if (py::isinstance<py::sequence>(value) && py::len(value) == 3) {
-    const py::sequence items = value.cast<py::sequence>();
-    std::string text;
-    for (size_t k = 0; k < 3; ++k) {
-      const py::handle item = items[k];
-      if (!py::isinstance<py::int_>(item) && !(py::hasattr(item, "__index__"))) {
-        throw UsageError(fmt::format("{} {}: expected three integers x,y,z", option,
-                                     py::repr(value).cast<std::string>()));
-      }
-      text += (k ? "," : "") +
-              py::str(py::int_(py::reinterpret_borrow<py::object>(item))).cast<std::string>();
-    }
-    return frontend::parseCell(option, text);
+Color colorArgument(const py::object& color) {
+  const auto refuse = [&] {
+    return py::type_error(fmt::format(
+        "add(): color must be three integers 0..255 (r, g, b), got {}", typeName(color)));
+  };
+  if (PyUnicode_Check(color.ptr()) || !PySequence_Check(color.ptr()) ||
+      PySequence_Size(color.ptr()) != 3) {
+    PyErr_Clear();
+    throw refuse();
   }
-  throw UsageError(fmt::format("{} {}: expected three integers x,y,z", option,
-                               py::repr(value).cast<std::string>()));
+  const py::sequence channels = py::reinterpret_borrow<py::sequence>(color);
+  int64_t rgb[3] = {};
+  for (size_t k = 0; k < 3; ++k) {
+    const py::object channel = channels[k];
+    if (!PyIndex_Check(channel.ptr()) || PyBool_Check(channel.ptr())) throw refuse();
+    rgb[k] = integerArgument({"add()", "color"}, channel, INT64_MIN, INT64_MAX);
+  }
+  for (const int64_t channel : rgb) {
+    if (channel < 0 || channel > 255) {
+      throw UsageError(fmt::format("color ({},{},{}): channels in 0..255", rgb[0], rgb[1], rgb[2]));
+    }
+  }
+  return Color{uint8_t(rgb[0]), uint8_t(rgb[1]), uint8_t(rgb[2])};
 }
 
-std::optional<Cell> optionalCell(const py::object& value, const std::string& option) {
-  if (value.is_none()) return std::nullopt;
-  return cellArgument(value, option);
+ModuleId idArgument(const std::string& function, const py::object& id) {
+  return ModuleId{uint32_t(integerArgument({function, "id"}, id, 0, UINT32_MAX))};
 }
 
 py::array_t<int32_t> cellArray(const std::vector<Cell>& cells) {

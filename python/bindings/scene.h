@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "arguments.h"
 #include "frontend/output_file.h"
 #include "frontend/usage_error.h"
 #include "frontend/visiblesim_grid.h"
@@ -30,17 +31,17 @@ namespace datomsim::python {
 namespace py = pybind11;
 using geometry::Cell;
 
-// A cell given as (x, y, z) or as the command line's text ("6,5,2", "(6,5,2)"); errors name
-// `option` as the command line would.
-Cell cellArgument(const py::handle& value, const std::string& option);
-
-std::optional<Cell> optionalCell(const py::object& value, const std::string& option);
-
 // An (n, 3) int32 array of cells.
 py::array_t<int32_t> cellArray(const std::vector<Cell>& cells);
 
 // The module kind named, or the scene's; refused as the command line refuses it.
 world::ModuleKind kindOf(const std::optional<std::string>& module, world::ModuleKind scene);
+
+// A module's colour: three integers 0..255.
+Color colorArgument(const py::object& color);
+
+// A module's id: an integer 0 .. 2^32 - 1.
+ModuleId idArgument(const std::string& function, const py::object& id);
 
 // A scene in memory: the modules and what the file formats carry besides them.
 class Scene {
@@ -52,8 +53,8 @@ class Scene {
   // The file the scene was read from, or empty: outputs never overwrite it.
   const std::string& source() const { return source_; }
   std::string module() const { return std::string(world::toString(scene_.moduleKind)); }
-  void setModule(const std::string& module) {
-    scene_.moduleKind = kindOf(module, scene_.moduleKind);
+  void setModule(const py::object& module) {
+    scene_.moduleKind = kindOf(stringArgument({"Scene", "module"}, module), scene_.moduleKind);
   }
 
   size_t size() const { return scene_.world.size(); }
@@ -100,29 +101,29 @@ class Scene {
   std::optional<std::string> name() const { return scene_.name; }
 
   // Adds a module (the next free id) and latches it to its neighbours; returns its id.
-  uint32_t add(const py::object& cell, int orientation, const std::tuple<int, int, int>& color) {
-    const Cell at = cellArgument(cell, "cell");
-    const auto code = geometry::Orientation::fromCode(orientation);
-    if (!code)
-      throw frontend::UsageError(fmt::format("orientation {}: a code in 0..23", orientation));
-    const auto [r, g, b] = color;
-    for (const int channel : {r, g, b}) {
-      if (channel < 0 || channel > 255) {
-        throw frontend::UsageError(fmt::format("color ({},{},{}): channels in 0..255", r, g, b));
-      }
-    }
+  uint32_t add(const py::object& cell, const py::object& orientation, const py::object& color) {
+    const Cell at = cellArgument({"add()", "cell"}, cell, "cell");
+    const auto number =
+        integerArgument({"add()", "orientation"}, orientation, INT32_MIN, INT32_MAX);
+    const auto code = geometry::Orientation::fromCode(int(number));
+    if (!code) throw frontend::UsageError(fmt::format("orientation {}: a code in 0..23", number));
+    const Color rgb = colorArgument(color);
     const ModuleId id = scene_.world.nextFreeId();
-    frontend::check(scene_.world.add({id, at, *code, Color{uint8_t(r), uint8_t(g), uint8_t(b)}}));
+    frontend::check(scene_.world.add({id, at, *code, rgb}));
     scene_.world.latchAllNeighbours();
     return id.value;
   }
-  void remove(uint32_t id) { frontend::check(scene_.world.remove(ModuleId{id})); }
-  void move(uint32_t id, const py::object& cell) {
-    frontend::check(scene_.world.move(ModuleId{id}, cellArgument(cell, "cell")));
+  void remove(const py::object& id) {
+    frontend::check(scene_.world.remove(idArgument("remove()", id)));
+  }
+  void move(const py::object& id, const py::object& cell) {
+    frontend::check(scene_.world.move(idArgument("move()", id),
+                                      cellArgument({"move()", "cell"}, cell, "cell")));
     scene_.world.latchAllNeighbours();
   }
   std::optional<uint32_t> moduleAt(const py::object& cell) const {
-    const world::Module* m = scene_.world.moduleAt(cellArgument(cell, "cell"));
+    const world::Module* m =
+        scene_.world.moduleAt(cellArgument({"module_at()", "cell"}, cell, "cell"));
     if (m == nullptr) return std::nullopt;
     return m->id.value;
   }
@@ -154,7 +155,8 @@ class Scene {
     return out;
   }
 
-  void save(const std::filesystem::path& path) const {
+  void save(const py::object& where) const {
+    const std::filesystem::path path = pathArgument({"save()", "path"}, where);
     frontend::unwrap(io::sceneFormatOf(path));
     // Opened as the commands open their outputs (a device written into, a FIFO with no reader
     // refused); the scene's own file may be saved over.

@@ -205,7 +205,13 @@ def run(
     "reason", as ``run --out`` writes it; bad options raise :class:`Error`.
     """
     if params is not None:
+        if not isinstance(params, Mapping):
+            raise TypeError(f"run(): params must be a dict, got {type(params).__name__}")
         options["params"] = dict(params)
+    if not (trace is None or isinstance(trace, (bool, str, os.PathLike))):
+        raise TypeError(f"run(): trace must be a path, True or False, got {type(trace).__name__}")
+    if isinstance(trace, os.PathLike) and not isinstance(os.fspath(trace), str):
+        raise TypeError("run(): trace must be a path as text, got bytes")
     # A file is written by the core, as `run --trace` writes it: checked against the scene's file
     # and the target before the run, whole or not at all.
     path = os.fspath(trace) if isinstance(trace, (str, os.PathLike)) else None

@@ -28,18 +28,15 @@ from __future__ import annotations
 
 import argparse
 import csv
-import hashlib
 import importlib.util
-import itertools
-import json
 import os
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any, Iterable, Iterator, Optional
 
-CELL_KEYS = {"size", "floor", "grid", "goal", "start", "root", "origin"}
-GENERATORS = {"box", "arch", "random", "reshape"}
+from .sweep_spec import SpecError, cases, is_integer, read_spec
+
 # What every row has after its inputs, in this order.
 OUTCOME_COLUMNS = [
     "success",
@@ -54,89 +51,6 @@ OUTCOME_COLUMNS = [
     "sim_time_s",
     "wall_s",
 ]
-
-
-class SpecError(ValueError):
-    """A spec that cannot be swept: the message names the key and the value."""
-
-
-def _is_cell(value: Any) -> bool:
-    return isinstance(value, str) or (
-        isinstance(value, (list, tuple)) and 2 <= len(value) <= 3
-        and all(isinstance(v, int) and not isinstance(v, bool) for v in value)
-    )
-
-
-def _choices(key: str, value: Any) -> list:
-    """The values a spec entry sweeps over."""
-    if key in CELL_KEYS:
-        if _is_cell(value):
-            return [value]
-        if isinstance(value, list) and value and all(_is_cell(v) for v in value):
-            return list(value)
-        raise SpecError(f"{key}: {json.dumps(value)} is neither a cell (x,y,z) nor a list of cells")
-    if isinstance(value, list):
-        if not value:
-            raise SpecError(f"{key}: an empty list sweeps over nothing")
-        return list(value)
-    return [value]
-
-
-def _expand(entry: dict) -> list[dict]:
-    """Every combination of an entry's choices, keys in the entry's order."""
-    keys = list(entry)
-    return [dict(zip(keys, combination))
-            for combination in itertools.product(*(_choices(k, entry[k]) for k in keys))]
-
-
-def _seeds(spec: dict) -> list[int]:
-    seeds = spec.get("seeds", [1])
-    if isinstance(seeds, dict):
-        unknown = set(seeds) - {"from", "count"}
-        if unknown or "count" not in seeds:
-            raise SpecError(f'seeds: {json.dumps(seeds)}: write {{"from": 1, "count": N}} or a list')
-        start = seeds.get("from", 1)
-        return list(range(start, start + seeds["count"]))
-    if isinstance(seeds, int):
-        return [seeds]
-    if isinstance(seeds, list) and all(isinstance(s, int) and s >= 0 for s in seeds):
-        return seeds
-    raise SpecError(f"seeds: {json.dumps(seeds)}: a list of integers 0 or more, or from/count")
-
-
-def cases(spec: dict) -> list[dict]:
-    """Every case of a spec: {"scene": {...}, "program": {...}, "parameters": {...}, "seed": n,
-    "case": id}, in the spec's order."""
-    if not isinstance(spec, dict):
-        raise SpecError("a spec is a JSON object with scenes, programs, parameters and seeds")
-    unknown = set(spec) - {"scenes", "programs", "parameters", "seeds"}
-    if unknown:
-        raise SpecError(f"unknown key(s) {', '.join(sorted(unknown))} (scenes, programs, "
-                        "parameters, seeds)")
-    for key in ("scenes", "programs"):
-        if not isinstance(spec.get(key), list) or not spec[key]:
-            raise SpecError(f"{key}: a non-empty list is needed")
-    scenes = []
-    for entry in spec["scenes"]:
-        if not isinstance(entry, dict) or ("file" in entry) == ("generate" in entry):
-            raise SpecError(f"scenes: {json.dumps(entry)} needs one of \"file\" or \"generate\"")
-        if "generate" in entry and entry["generate"] not in GENERATORS:
-            raise SpecError(f"scenes: generate {json.dumps(entry['generate'])} is not one of "
-                            f"{', '.join(sorted(GENERATORS))}")
-        scenes.extend(_expand(entry))
-    programs = []
-    for entry in spec["programs"]:
-        if not isinstance(entry, dict) or "program" not in entry:
-            raise SpecError(f"programs: {json.dumps(entry)} needs a \"program\"")
-        programs.extend(_expand(entry))
-    parameters = _expand(spec.get("parameters", {}))
-    found = []
-    for scene, program, chosen, seed in itertools.product(scenes, programs, parameters,
-                                                          _seeds(spec)):
-        case = {"scene": scene, "program": program, "parameters": chosen, "seed": seed}
-        case["case"] = hashlib.sha1(json.dumps(case, sort_keys=True).encode()).hexdigest()[:12]
-        found.append(case)
-    return found
 
 
 def _label(scene: dict) -> str:
@@ -267,16 +181,15 @@ def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None
     """
     if isinstance(spec, (str, os.PathLike)):
         path = os.fspath(spec)
-        try:
-            with open(path, encoding="utf-8") as file:
-                loaded = json.load(file)
-        except OSError as error:
-            raise SpecError(f"{path}: {error.strerror}") from None
-        except json.JSONDecodeError as error:
-            raise SpecError(f"{path}: line {error.lineno}: {error.msg}") from None
+        spec = read_spec(path)
         base = base or os.path.dirname(os.path.abspath(path))
-        spec = loaded
     base = base or os.getcwd()
+    if out is not None:
+        if not isinstance(out, (str, os.PathLike)):
+            raise SpecError(f"out {out!r}: a path to a .csv file")
+        out = os.fspath(out)
+    if workers is not None and (not is_integer(workers) or workers < 1):
+        raise SpecError(f"workers {workers!r}: a number of processes, 1 or more")
     all_cases = cases(spec)
     columns = _columns(all_cases)
     parquet = None
@@ -296,8 +209,10 @@ def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None
     bar = _progress(len(all_cases), len(all_cases) - len(todo), quiet)
     writer = None
     file = None
+    created = False
     if out is not None:
-        fresh = not os.path.exists(out) or os.path.getsize(out) == 0
+        created = not os.path.exists(out)
+        fresh = created or os.path.getsize(out) == 0
         if not fresh:
             with open(out, newline="", encoding="utf-8") as existing:
                 header = next(csv.reader(existing), [])
@@ -317,6 +232,15 @@ def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None
             rows.append(row)
             if bar is not None:
                 bar.update()
+    except Exception:
+        # A sweep that fails leaves no file of its own behind; one stopped (Ctrl-C) keeps its
+        # rows, to go on from.
+        if file is not None:
+            file.close()
+            file = None
+            if created:
+                os.remove(out)
+        raise
     finally:
         if bar is not None:
             bar.close()
@@ -328,7 +252,12 @@ def sweep(spec: Any, out: Optional[str] = None, *, workers: Optional[int] = None
         import pandas
 
         partial = parquet + ".partial"
-        pandas.DataFrame(rows, columns=columns).to_parquet(partial, index=False)
+        try:
+            pandas.DataFrame(rows, columns=columns).to_parquet(partial, index=False)
+        except BaseException:
+            if os.path.exists(partial):
+                os.remove(partial)
+            raise
         os.replace(partial, parquet)
     return rows
 
@@ -364,12 +293,20 @@ def main(argv: Optional[Iterable[str]] = None) -> int:
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     arguments = parser.parse_args(list(argv) if argv is not None else None)
     if arguments.workers is not None and arguments.workers < 1:
-        parser.error(f"--workers {arguments.workers}: 1 or more")
+        # The command line's message (datomsim sweep --workers).
+        print(f"datomsim sweep: error: --workers: must be a finite number > 0, got "
+              f"{arguments.workers}", file=sys.stderr)
+        return 1
     try:
         rows = sweep(arguments.spec, arguments.out, workers=arguments.workers,
                      scheduler=arguments.scheduler, quiet=arguments.quiet)
     except (SpecError, OSError) as error:
         print(f"datomsim sweep: error: {error}", file=sys.stderr)
+        return 1
+    except (ValueError, TypeError, RecursionError, MemoryError) as error:
+        # What the spec made happen (datomsim.Error is a ValueError): named, not a traceback.
+        print(f"datomsim sweep: error: {arguments.spec}: {type(error).__name__}: {error}",
+              file=sys.stderr)
         return 1
     failed = sum(1 for row in rows if not row.get("success"))
     if not arguments.quiet:

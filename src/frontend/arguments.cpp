@@ -63,8 +63,34 @@ geometry::Cell parseCell(const std::string& option, const std::string& text) {
   return *cell;
 }
 
+const std::string& checkChoice(const std::string& option, const std::string& value,
+                               std::span<const std::string_view> choices) {
+  std::string names;
+  for (const std::string_view choice : choices) {
+    if (value == choice) return value;
+    names += fmt::format("{}{}", names.empty() ? "" : ",", choice);
+  }
+  throw UsageError(fmt::format("{}: {} not in {{{}}}", option, value, names));
+}
+
+int checkMaxMotions(std::optional<int64_t> maxMotions) {
+  if (!maxMotions) return 0;
+  // The command line's message for a number below 1 (its kPositive validator's).
+  if (*maxMotions < 1) {
+    throw UsageError(
+        fmt::format("--max-motions: must be a finite number > 0, got {}", *maxMotions));
+  }
+  if (*maxMotions > INT32_MAX) {
+    throw UsageError(fmt::format("--max-motions: at most {}, got {}", INT32_MAX, *maxMotions));
+  }
+  return int(*maxMotions);
+}
+
 motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment,
                                      const std::string& connectivity) {
+  checkChoice("--rules", rules, kRuleSets);
+  checkChoice("--attachment", attachment, kOnOff);
+  checkChoice("--connectivity", connectivity, kOnOff);
   motion::RuleOptions options;
   options.rules = rules == "strict" ? motion::RuleSet::kStrict : motion::RuleSet::kPaper;
   options.attachment = attachment != "off";

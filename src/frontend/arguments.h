@@ -2,9 +2,13 @@
 // options), parsed with errors that name the option; the Python package fills the same.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 
 #include "catom3d/rolling.h"
 #include "datomsim/time.h"
@@ -31,7 +35,21 @@ Time parseSeconds(const std::string& option, double seconds);
 // more, at most kLongestDelay (10^9 ms); throws UsageError naming the option and the value.
 Time parseMilliseconds(const std::string& option, double milliseconds);
 
-// "paper" | "strict", and "on" | "off" for the attachment and connectivity checks.
+// `value` when it is one of `choices`; else throws UsageError "--rules: bogus not in
+// {paper,strict}" (the command line's validators call it too, so both say the same).
+const std::string& checkChoice(const std::string& option, const std::string& value,
+                               std::span<const std::string_view> choices);
+
+// The choices of --rules, --attachment and --connectivity.
+inline constexpr std::array<std::string_view, 2> kRuleSets = {"paper", "strict"};
+inline constexpr std::array<std::string_view, 2> kOnOff = {"on", "off"};
+
+// --max-motions: motions in flight at once, 1 or more; not given, no limit (0 for the
+// simulator). Throws UsageError naming the option and the value.
+int checkMaxMotions(std::optional<int64_t> maxMotions);
+
+// "paper" | "strict", and "on" | "off" for the attachment and connectivity checks; anything
+// else is refused (checkChoice).
 motion::RuleOptions parseRuleOptions(const std::string& rules, const std::string& attachment,
                                      const std::string& connectivity = "off");
 

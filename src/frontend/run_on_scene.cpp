@@ -117,9 +117,7 @@ RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArg
         fmt::format("--load-region {}: a number of modules, 0 or more", args.loadRegion));
   }
   request.simulation.loadRegion = size_t(args.loadRegion);
-  if (args.maxMotions < 0)
-    throw UsageError(fmt::format("--max-motions {}: 1 or more", args.maxMotions));
-  request.simulation.maxMotions = args.maxMotions;
+  request.simulation.maxMotions = checkMaxMotions(args.maxMotions);
   request.simulation.seed = parseSeed("--seed", args.seed);
   request.simulation.messageDelay = parseMilliseconds("--delay-ms", args.delayMs);
   request.simulation.messageJitter = parseMilliseconds("--jitter-ms", args.jitterMs);

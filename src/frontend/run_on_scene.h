@@ -35,7 +35,8 @@ struct RunArguments {
   std::string rolling = "symmetric";
   std::string seed = "1";
   double delayMs = 10, jitterMs = 0;  // parseMilliseconds checks them
-  int maxMotions = 0;
+  // Not given: no limit (checkMaxMotions refuses anything below 1).
+  std::optional<int64_t> maxMotions;
   // --connectivity was given (reconfiguration keeps the ensemble connected unless told).
   bool connectivityGiven = false;
   // Gravity: "off", "on" (0,0,-9.81 m/s^2) or the gravity vector "x,y,z"; with it on, the load

@@ -99,6 +99,12 @@ Matrix rotationMatrix(const Vec3& degrees) {
   return multiply(aboutZ, multiply(aboutY, aboutX));
 }
 
+size_t nodeCount(const Node& node) {
+  size_t count = 1;
+  for (const Node& child : node.children) count += nodeCount(child);
+  return count;
+}
+
 bool contains(const Node& node, const Vec3& p) {
   switch (node.kind) {
     case Kind::kUnion:

@@ -66,6 +66,9 @@ struct Node {
 // quarter turns targets are made of map lattice points onto lattice points.
 Matrix rotationMatrix(const geometry::Vec3& degrees);
 
+// The nodes of the tree, itself included: what one containment test may visit at most.
+size_t nodeCount(const Node& node);
+
 // Whether `point` lies in the shape (boundaries included).
 bool contains(const Node& node, const geometry::Vec3& point);
 

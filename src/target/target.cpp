@@ -142,6 +142,13 @@ Status Target::scanCsgCells(const std::function<void(const Cell&)>& visit) const
         "{:.3g} cells, more than the {} that may be listed",
         low.x, low.y, low.z, high.x, high.y, high.z, candidates, kMaxListedCells)};
   }
+  const double tests = candidates * double(csg::nodeCount(csgShape_));
+  if (tests > kMaxCsgTests) {
+    return Error{fmt::format(
+        "the CSG shape's {} nodes over about {:.3g} candidate cells make {:.3g} containment tests, "
+        "more than the {:g} allowed (docs/limits.md)",
+        csg::nodeCount(csgShape_), candidates, tests, kMaxCsgTests)};
+  }
   // Cells are 32-bit: the layer shift z/2 is within the same bound as z.
   constexpr double kLimit = double(std::numeric_limits<int32_t>::max()) / 2;
   for (const double v : {zLow, zHigh, low.x, high.x, low.y, high.y}) {

@@ -36,6 +36,12 @@ std::string_view formatName(Format format);
 // development machine, and their list up to 800 MB while it grows.
 inline constexpr size_t kMaxListedCells = 50'000'000;
 
+// The most containment tests a CSG target's scan may make: its candidate cells times the nodes
+// of its shape (each candidate may visit every node). A cube of 16 million candidates less 50
+// spheres (8e8 tests) takes 3.9 s on the development machine; a shape of many nodes over a wide
+// box would run for minutes.
+inline constexpr double kMaxCsgTests = 1e9;
+
 // One cell of a grid target; the colour is there when the file gives one.
 struct GridCell {
   geometry::Cell cell;

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "geometry/lattice.h"
@@ -147,6 +149,22 @@ TEST(Target, RefusesToListTheCellsOfAnUnboundedOrHugeShape) {
   EXPECT_NE(unbounded.error().find("unbounded"), std::string::npos) << unbounded.error();
   // Membership needs no listing.
   EXPECT_TRUE(csgTarget("cube([1000,1000,1000]);").contains({10, 10, 10}));
+}
+
+TEST(Target, RefusesAScanOfTooManyContainmentTestsBeforeItStarts) {
+  // 16 million candidates (within the listing bound) times 401 nodes: minutes of scanning.
+  std::string shape = "difference() { cube([4000,4000,1]);";
+  for (int k = 0; k < 400; ++k) shape += " sphere(1);";
+  shape += " }";
+  const auto started = std::chrono::steady_clock::now();
+  const Result<size_t> count = csgTarget(shape).count();
+  ASSERT_FALSE(count.ok());
+  EXPECT_NE(count.error().find("containment tests, more than the 1e+09 allowed"), std::string::npos)
+      << count.error();
+  EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(1));
+  // As many nodes over a smaller box are scanned (1.6e5 candidates, 6.4e7 tests).
+  shape.replace(shape.find("4000,4000"), 9, "400,400");
+  EXPECT_TRUE(csgTarget(shape).count().ok());
 }
 
 TEST(Target, RefusesACsgTextThatDoesNotParse) {

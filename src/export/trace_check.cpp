@@ -183,7 +183,7 @@ std::string headerProblem(const Json& header) {
   return {};
 }
 
-std::string changeProblem(const Json& change, const std::set<int64_t>& ids) {
+std::string changeProblem(const Json& change, const std::set<double>& ids) {
   if (!change.is_object()) return "a change must be an object";
   const Json& t = field(change, "t");
   if (!isFiniteNumber(t) || t.get<double>() < 0) return "a change needs a time \"t\" >= 0";
@@ -201,7 +201,7 @@ std::string changeProblem(const Json& change, const std::set<int64_t>& ids) {
   if (!body.is_object()) return fmt::format("\"{}\" must be an object", kind);
   const auto unknown = [&](std::string_view name) -> std::string {
     const Json& id = field(body, name);
-    if (isInteger(id) && ids.count(int64_t(id.get<double>()))) return {};
+    if (isInteger(id) && ids.count(id.get<double>())) return {};
     return fmt::format("\"{}\" names unknown module {} in \"{}\"", kind, stringify(id), name);
   };
   const auto duration = [&]() -> std::string {
@@ -266,7 +266,7 @@ std::string changeProblem(const Json& change, const std::set<int64_t>& ids) {
   const Json& blockers = field(body, "blockers");
   if (!blockers.is_array()) return "\"motion\" needs a list \"blockers\"";
   for (const Json& id : blockers) {
-    if (!isInteger(id) || !ids.count(int64_t(id.get<double>()))) {
+    if (!isInteger(id) || !ids.count(id.get<double>())) {
       return fmt::format("\"motion\" names unknown module {} in \"blockers\"", stringify(id));
     }
   }

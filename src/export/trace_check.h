@@ -15,6 +15,6 @@ std::string headerProblem(const nlohmann::json& header);
 
 // What is wrong with one change after the header (`ids`: the header's module ids), or an empty
 // string. Changes of kinds the format does not know are accepted (a later format may add them).
-std::string changeProblem(const nlohmann::json& change, const std::set<int64_t>& ids);
+std::string changeProblem(const nlohmann::json& change, const std::set<double>& ids);
 
 }  // namespace datomsim::exporting

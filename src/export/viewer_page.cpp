@@ -240,8 +240,9 @@ Result<std::string> checkTrace(const std::string& text, const std::string& name)
   if (const std::string problem = headerProblem(*header); !problem.empty()) {
     return Error{fmt::format("{}:{}: {}", name, spans->front().line, problem)};
   }
-  std::set<int64_t> ids;
-  for (const Json& module : (*header)["modules"]) ids.insert(int64_t(module["id"].get<double>()));
+  // Numbers, as JavaScript compares them: a cast to an integer would make 1e300 and 1e301 one id.
+  std::set<double> ids;
+  for (const Json& module : (*header)["modules"]) ids.insert(module["id"].get<double>());
   for (size_t k = 1; k < spans->size(); ++k) {
     const auto value = parseSpan(text, (*spans)[k], name);
     if (!value) return Error{value.error()};

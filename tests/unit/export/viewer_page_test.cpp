@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/atomic_file.h"
+#include "export/trace_check.h"
 #include "io/scene_file.h"
 #include "record/trace_writer.h"
 #include "support/temporary_directory.h"
@@ -327,6 +328,17 @@ std::string traceOf(const nlohmann::json& testCase, const std::string& base) {
   std::string text;
   for (const auto& v : values) text += v.dump() + "\n";
   return text;
+}
+
+// Ids are numbers compared as JavaScript compares them: a cast to an integer made 1e300 and 1e301
+// (and any two ids beyond 64 bits) one id, which the viewer then refused.
+TEST(CheckTrace, ModuleIdsBeyondSixtyFourBitsStayApart) {
+  const std::set<double> ids = {1, 1e300};
+  const auto colour = [](double id) {
+    return nlohmann::json{{"t", 5}, {"color", {{"m", id}, {"rgb", {1, 2, 3}}}}};
+  };
+  EXPECT_EQ(changeProblem(colour(1e300), ids), "");
+  EXPECT_EQ(changeProblem(colour(1e301), ids), "\"color\" names unknown module 1e+301 in \"m\"");
 }
 
 TEST(TraceCases, ViewRefusesWhatTheViewerRefusesWithTheSameMessageAndLine) {

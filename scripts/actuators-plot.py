@@ -66,6 +66,10 @@ def plot(rows, path):
     os.close(descriptor)
     try:
         figure.savefig(temporary)
+        # mkstemp makes the file private (0600); a picture is as readable as any other file.
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(temporary, 0o666 & ~umask)
         os.replace(temporary, path)
     except BaseException:
         os.unlink(temporary)

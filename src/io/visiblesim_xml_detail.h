@@ -80,7 +80,24 @@ Result<std::vector<target::Target>> readTargetList(const tinyxml2::XMLElement& t
                                                    std::string_view source,
                                                    const world::Bounds& bounds);
 
+// tinyxml2's printer, with attribute values that read back as written: tab, line feed and carriage
+// return are written as character references, since a reader normalises them (tinyxml2 reads a
+// carriage return as a line feed; XML 1.0 all three as spaces). Every attribute goes through
+// pushAttribute.
+class XmlPrinter : public tinyxml2::XMLPrinter {
+ public:
+  using tinyxml2::XMLPrinter::XMLPrinter;
+  void pushAttribute(const char* name, const char* value);
+
+ protected:
+  void Write(const char* data, size_t size) override;
+  void Putc(char c) override;
+
+ private:
+  bool inValue_ = false;
+};
+
 // Prints the <targetList> of the targets; nothing when there are none.
-void printTargetList(tinyxml2::XMLPrinter& printer, const std::vector<target::Target>& targets);
+void printTargetList(XmlPrinter& printer, const std::vector<target::Target>& targets);
 
 }  // namespace datomsim::io::detail

@@ -152,30 +152,30 @@ Result<std::vector<target::Target>> readTargetList(const XMLElement& targetList,
   return targets;
 }
 
-void printTargetList(tinyxml2::XMLPrinter& printer, const std::vector<target::Target>& targets) {
+void printTargetList(XmlPrinter& printer, const std::vector<target::Target>& targets) {
   if (targets.empty()) return;
   printer.OpenElement("targetList");
   for (const target::Target& target : targets) {
     printer.OpenElement("target");
-    printer.PushAttribute("format", std::string(target::formatName(target.format())).c_str());
-    if (target.color()) printer.PushAttribute("color", colorText(*target.color()).c_str());
+    printer.pushAttribute("format", std::string(target::formatName(target.format())).c_str());
+    if (target.color()) printer.pushAttribute("color", colorText(*target.color()).c_str());
     for (const target::GridCell& cell : target.gridCells()) {
       printer.OpenElement("cell");
-      printer.PushAttribute("position", geometry::toString(cell.cell).c_str());
-      if (cell.color) printer.PushAttribute("color", colorText(*cell.color).c_str());
+      printer.pushAttribute("position", geometry::toString(cell.cell).c_str());
+      if (cell.color) printer.pushAttribute("color", colorText(*cell.color).c_str());
       printer.CloseElement();
     }
     if (target.format() == target::Format::kCsg) {
       // The attributes in the order of VisibleSim's own examples.
       const target::CsgPlacement& placement = target.csgPlacement();
       printer.OpenElement("csg");
-      printer.PushAttribute("content", target.csgContent().c_str());
-      if (placement.offset) printer.PushAttribute("offset", *placement.offset ? "true" : "false");
+      printer.pushAttribute("content", target.csgContent().c_str());
+      if (placement.offset) printer.pushAttribute("offset", *placement.offset ? "true" : "false");
       if (placement.boundingBox) {
-        printer.PushAttribute("boundingBox", *placement.boundingBox ? "true" : "false");
+        printer.pushAttribute("boundingBox", *placement.boundingBox ? "true" : "false");
       }
       if (const auto& v = placement.translate) {
-        printer.PushAttribute("translate", fmt::format("{},{},{}", formatNumber(v->x),
+        printer.pushAttribute("translate", fmt::format("{},{},{}", formatNumber(v->x),
                                                        formatNumber(v->y), formatNumber(v->z))
                                                .c_str());
       }

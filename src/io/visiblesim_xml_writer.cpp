@@ -93,37 +93,37 @@ std::string colorText(const Color& color) {
   return fmt::format("{},{},{}", color.r, color.g, color.b);
 }
 
-void printElement(tinyxml2::XMLPrinter& printer, const char* name, const AttributeList& list) {
+void printElement(detail::XmlPrinter& printer, const char* name, const AttributeList& list) {
   printer.OpenElement(name);
   for (const Attribute& attribute : list) {
-    printer.PushAttribute(attribute.name.c_str(), attribute.value.c_str());
+    printer.pushAttribute(attribute.name.c_str(), attribute.value.c_str());
   }
   printer.CloseElement();
 }
 
 // The layout follows VisibleSim's own files: declaration, world, viewer settings, blockList,
 // targetList.
-void printScene(tinyxml2::XMLPrinter& printer, const Scene& scene) {
+void printScene(detail::XmlPrinter& printer, const Scene& scene) {
   printer.PushDeclaration("xml version=\"1.0\" standalone=\"no\" ");
   printer.OpenElement("world");
   if (const auto& grid = scene.world.bounds().gridSize) {
-    printer.PushAttribute("gridSize", geometry::toString(*grid).c_str());
+    printer.pushAttribute("gridSize", geometry::toString(*grid).c_str());
   }
   for (const Attribute& attribute : scene.visibleSim.world) {
-    printer.PushAttribute(attribute.name.c_str(), attribute.value.c_str());
+    printer.pushAttribute(attribute.name.c_str(), attribute.value.c_str());
   }
-  if (scene.name) printer.PushAttribute("name", scene.name->c_str());
-  if (scene.description) printer.PushAttribute("description", scene.description->c_str());
+  if (scene.name) printer.pushAttribute("name", scene.name->c_str());
+  if (scene.description) printer.pushAttribute("description", scene.description->c_str());
   if (scene.visibleSim.camera) printElement(printer, "camera", *scene.visibleSim.camera);
   if (scene.visibleSim.spotlight) printElement(printer, "spotlight", *scene.visibleSim.spotlight);
 
   printer.OpenElement("blockList");
   const auto& size = scene.blockSize;
-  printer.PushAttribute("blockSize", fmt::format("{},{},{}", formatNumber(size[0]),
+  printer.pushAttribute("blockSize", fmt::format("{},{},{}", formatNumber(size[0]),
                                                  formatNumber(size[1]), formatNumber(size[2]))
                                          .c_str());
   if (scene.moduleKind != world::ModuleKind::kDatom) {
-    printer.PushAttribute("moduleKind", std::string(world::toString(scene.moduleKind)).c_str());
+    printer.pushAttribute("moduleKind", std::string(world::toString(scene.moduleKind)).c_str());
   }
   // Ids 1, 2, 3... in order are what a reader assigns anyway; only other ids need writing.
   const auto modules = scene.world.modules();
@@ -131,10 +131,10 @@ void printScene(tinyxml2::XMLPrinter& printer, const Scene& scene) {
   for (size_t i = 0; i < modules.size() && !writeIds; ++i) writeIds = modules[i].id.value != i + 1;
   for (const world::Module& module : modules) {
     printer.OpenElement("block");
-    if (writeIds) printer.PushAttribute("id", std::to_string(module.id.value).c_str());
-    printer.PushAttribute("position", geometry::toString(module.cell).c_str());
-    printer.PushAttribute("color", colorText(module.color).c_str());
-    printer.PushAttribute("orientation", std::to_string(module.orientation.code()).c_str());
+    if (writeIds) printer.pushAttribute("id", std::to_string(module.id.value).c_str());
+    printer.pushAttribute("position", geometry::toString(module.cell).c_str());
+    printer.pushAttribute("color", colorText(module.color).c_str());
+    printer.pushAttribute("orientation", std::to_string(module.orientation.code()).c_str());
     printer.CloseElement();
   }
   printer.CloseElement();
@@ -146,17 +146,49 @@ void printScene(tinyxml2::XMLPrinter& printer, const Scene& scene) {
 
 Result<std::string> toVisibleSimXml(const Scene& scene) {
   if (Status status = checkWritable(scene); !status) return Error{status.error()};
-  tinyxml2::XMLPrinter printer;
+  detail::XmlPrinter printer;
   printScene(printer, scene);
   return std::string(printer.CStr(), size_t(printer.CStrSize() - 1));
 }
 
 Status writeVisibleSimXml(const Scene& scene, std::FILE* file) {
   if (Status status = checkWritable(scene); !status) return status;
-  tinyxml2::XMLPrinter printer(file);
+  detail::XmlPrinter printer(file);
   printScene(printer, scene);
   if (std::ferror(file)) return Error{std::strerror(errno)};
   return Ok{};
 }
+
+namespace detail {
+
+void XmlPrinter::pushAttribute(const char* name, const char* value) {
+  // The name and the quotes hold none of the three characters (names are checked before).
+  inValue_ = true;
+  PushAttribute(name, value);
+  inValue_ = false;
+}
+
+void XmlPrinter::Write(const char* data, size_t size) {
+  if (!inValue_) return tinyxml2::XMLPrinter::Write(data, size);
+  size_t run = 0;
+  for (size_t i = 0; i < size; ++i) {
+    if (data[i] != '\t' && data[i] != '\n' && data[i] != '\r') continue;
+    tinyxml2::XMLPrinter::Write(data + run, i - run);
+    const char* reference = data[i] == '\t' ? "&#9;" : data[i] == '\n' ? "&#10;" : "&#13;";
+    tinyxml2::XMLPrinter::Write(reference, std::strlen(reference));
+    run = i + 1;
+  }
+  tinyxml2::XMLPrinter::Write(data + run, size - run);
+}
+
+void XmlPrinter::Putc(char c) {
+  if (inValue_ && (c == '\t' || c == '\n' || c == '\r')) {
+    const char text[] = {c, '\0'};
+    return Write(text, 1);
+  }
+  tinyxml2::XMLPrinter::Putc(c);
+}
+
+}  // namespace detail
 
 }  // namespace datomsim::io

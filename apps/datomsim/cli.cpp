@@ -8,6 +8,7 @@
 #include <exception>
 #include <filesystem>
 #include <new>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,35 +21,88 @@ namespace datomsim {
 
 namespace app {
 
-// "; did you mean \"run\"?" for the subcommand nearest a mistyped word (edit distance at most 2),
-// else the list of subcommands.
-std::string nearestSubcommand(const CLI::App& app, std::string_view word) {
-  auto distance = [](std::string_view a, std::string_view b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-      size_t diagonal = row[0];
-      row[0] = i;
-      for (size_t j = 1; j <= b.size(); ++j) {
-        const size_t above = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-        diagonal = above;
-      }
+namespace {
+
+size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = above;
     }
-    return row[b.size()];
-  };
-  std::string best, names;
+  }
+  return row[b.size()];
+}
+
+// The name among `names` nearest `word` (edit distance at most 2), or empty.
+std::string nearest(std::string_view word, const std::vector<std::string>& names) {
+  std::string best;
   size_t bestDistance = 3;
-  for (const CLI::App* command : app.get_subcommands({})) {
-    const std::string& name = command->get_name();
-    names += (names.empty() ? "" : ", ") + name;
-    if (const size_t d = distance(word, name); d < bestDistance) {
+  for (const std::string& name : names) {
+    if (const size_t d = editDistance(word, name); d < bestDistance) {
       bestDistance = d;
       best = name;
     }
   }
-  if (!best.empty()) return fmt::format("; did you mean \"{}\"?", best);
-  return "; the subcommands are " + names;
+  return best;
+}
+
+}  // namespace
+
+// "; did you mean \"run\"?" for the subcommand nearest a mistyped word (edit distance at most 2),
+// else the list of subcommands.
+std::string nearestSubcommand(const CLI::App& app, std::string_view word) {
+  std::vector<std::string> names;
+  for (const CLI::App* command : app.get_subcommands({})) names.push_back(command->get_name());
+  if (const std::string best = nearest(word, names); !best.empty()) {
+    return fmt::format("; did you mean \"{}\"?", best);
+  }
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  return "; the subcommands are " + list;
+}
+
+// The first word of the command line that looks like a long option and that neither the
+// subcommands it names nor their parents know, with the nearest one they do: "unknown option
+// --tiemout for run; did you mean --timeout?". CLI11 would say "--program is required" first, or
+// only that the word was not expected.
+std::optional<std::string> unknownOption(const CLI::App& app, int argc, char** argv) {
+  std::vector<const CLI::App*> chain = {&app};
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view word = argv[i];
+    if (word == "--") break;
+    if (word.starts_with("-")) continue;
+    for (const CLI::App* command : chain.back()->get_subcommands({})) {
+      if (command->get_name() == word) {
+        chain.push_back(command);
+        break;
+      }
+    }
+  }
+  std::vector<std::string> known;
+  for (const CLI::App* command : chain) {
+    for (const CLI::Option* option : command->get_options({})) {
+      for (const std::string& name : option->get_lnames()) known.push_back("--" + name);
+    }
+  }
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view word = argv[i];
+    if (word == "--") break;
+    if (!word.starts_with("--")) continue;
+    const std::string name(word.substr(0, word.find('=')));
+    if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+    std::string path;
+    for (size_t k = 1; k < chain.size(); ++k)
+      path += (path.empty() ? "" : " ") + chain[k]->get_name();
+    const std::string best = nearest(name, known);
+    return fmt::format("unknown option {}{}{}", name, path.empty() ? "" : " for " + path,
+                       best.empty() ? "" : fmt::format("; did you mean {}?", best));
+  }
+  return std::nullopt;
 }
 
 }  // namespace app
@@ -104,6 +158,10 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
     // Help and version exit 0; every other mistake on the command line exits 1 with one line,
     // as any bad input does (CLI11's own codes, 100 and up, would say nothing more).
     if (error.get_exit_code() == 0) return app.exit(error);
+    if (const auto unknown = app::unknownOption(app, argc, argv)) {
+      fmt::print(stderr, "datomsim: error: {}\nRun with --help for more information.\n", *unknown);
+      return 1;
+    }
     fmt::print(stderr, "datomsim: error: {}\nRun with --help for more information.\n",
                error.what());
     return 1;

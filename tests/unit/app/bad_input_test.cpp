@@ -203,8 +203,17 @@ TEST_F(BadInput, CommandLineMistakesExitOneAndAnUnknownSubcommandIsNamed) {
   refused("rnu " + box(), "unknown subcommand \"rnu\"; did you mean \"run\"?");
   refused("frobnicate", "unknown subcommand \"frobnicate\"; the subcommands are geometry,");
   refused("", "A subcommand is required");
-  refused("info --bogus " + box(), "The following argument was not expected: --bogus");
+  refused("info --bogus " + box(), "unknown option --bogus for info");
   refused("run " + box(), "--program is required");
+  // A mistyped option is named, with the nearest one, before what else is missing.
+  refused("run " + box() + " --tiemout 5",
+          "unknown option --tiemout for run; did you mean --timeout?");
+  refused("generate box --szie 2,2,2 -o " + path("b.json"),
+          "unknown option --szie for generate box; did you mean --size?", path("b.json"));
+  refused("actuators show sma-spring --sise=1cm",
+          "unknown option --sise for actuators show; did you mean --size?");
+  refused("loads " + box() + " --latch-forc 1",
+          "unknown option --latch-forc for loads; did you mean --latch-force?");
   EXPECT_EQ(datomsim("--version").status, 0);
   EXPECT_EQ(datomsim("run --help").status, 0);
 }

@@ -124,6 +124,23 @@ TEST_F(BadInput, SizesBeyondTheLimitsAreRefusedUpFront) {
   refused("info " + path("zero.xml"), "zero.xml: is not a regular file");
 }
 
+// Within the module limit but beyond what the process may take: refused before anything is
+// allocated, rather than killed half-way. The limit is set as a user would, with ulimit -v.
+TEST_F(BadInput, ABoxBeyondTheMemoryAvailableIsRefusedUpFront) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than ulimit -v allows";
+#else
+  const Outcome outcome = shell("ulimit -v 1000000 && " + std::string(DATOMSIM_BINARY) +
+                                " generate box --size 10000,10000,1 -o " + path("big.json"));
+  EXPECT_EQ(outcome.status, 1) << outcome.output;
+  EXPECT_NE(outcome.output.find("a box of 10000,10000,1 is 100000000 modules, about 4.2 GB to "
+                                "generate; this process may take 1.0 GB"),
+            std::string::npos)
+      << outcome.output;
+  EXPECT_FALSE(std::filesystem::exists(path("big.json")));
+#endif
+}
+
 TEST_F(BadInput, CoordinatesOutsideTheSupportedRangeAreRefusedAtEveryEntry) {
   refused("generate box --size 3,1,1 --origin 2147483646,0,0 -o " + path("e.json"),
           "--origin \"2147483646,0,0\": 2147483646 is outside the supported coordinate range, "

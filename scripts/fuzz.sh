@@ -14,7 +14,8 @@ shift || true
 fuzzers=("$@")
 python_fuzz=0
 if ((${#fuzzers[@]} == 0)); then
-  fuzzers=(json_scene_fuzzer xml_scene_fuzzer trace_fuzzer arguments_fuzzer actuator_design_fuzzer)
+  fuzzers=(json_scene_fuzzer xml_scene_fuzzer trace_fuzzer arguments_fuzzer actuator_design_fuzzer
+    csg_target_fuzzer)
   python_fuzz=1
 elif [[ " ${fuzzers[*]} " == *" python "* ]]; then
   python_fuzz=1

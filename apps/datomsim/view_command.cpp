@@ -161,6 +161,19 @@ void addVideoCommand(CLI::App& app, const Reporter& reporter) {
     request.out = outputFor(args->out, args->page.input, ".mp4");
     // ffmpeg writes the video (to a partial file renamed at the end: video/recorder.h).
     frontend::refuseClashes(inputsOf(args->page), {{"-o", request.out.string()}});
+    // The partial file is renamed onto the output, which would replace a device or a FIFO (as
+    // root, /dev/null itself) and a symbolic link: a special file is refused, a link followed.
+    std::error_code error;
+    if (const auto status = std::filesystem::status(request.out, error);
+        !error && std::filesystem::exists(status)) {
+      if (!std::filesystem::is_regular_file(status)) {
+        throw UsageError(fmt::format(
+            "-o {}: not a regular file; a video is written to a file of its own (ffmpeg makes it "
+            "whole, then it is renamed into place)",
+            request.out.string()));
+      }
+      request.out = std::filesystem::canonical(request.out);
+    }
     unwrap(video::containerOf(request.out));  // before the page is made
     std::tie(request.width, request.height) = parseSize(args->size);
     request.fps = args->fps;

@@ -4,6 +4,7 @@
 // They need Chromium and ffmpeg (scripts/install-deps.sh installs both) and say so when either
 // is missing.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <regex>
@@ -136,6 +137,15 @@ TEST_F(VideoCommand, BadRequestsAreRefusedNamingTheValueAndLeaveNoVideo) {
     EXPECT_NE(refused.output.find(c.says), std::string::npos) << c.arguments << "\n"
                                                               << refused.output;
   }
+  // A special file is refused, not replaced by the renamed video (as root, -o /dev/null would
+  // have replaced the system's own).
+  const std::string fifo = path("special.mp4");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const Outcome special = datomsim("video " + input + " -o " + fifo);
+  EXPECT_EQ(special.status, 1) << special.output;
+  EXPECT_NE(special.output.find("-o " + fifo + ": not a regular file"), std::string::npos)
+      << special.output;
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
   const Outcome noBrowser = shell("CHROMIUM=/no/chrome " + std::string(DATOMSIM_BINARY) +
                                   " video " + input + " -o " + out);
   EXPECT_EQ(noBrowser.status, 1);

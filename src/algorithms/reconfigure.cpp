@@ -119,6 +119,10 @@ void ReconfigureProgram::onTimer(Context& context, int tag) {
   if (tag >= kWatchdog) return onWatchdog(context, uint32_t(tag - kWatchdog));
   if (tag == kNewVersion) return adopt(context, nextVersion(context.now() - 1));
   if (tag == kSpread) return spreadFound(context);
+  if (tag == kRetryMove) {
+    if (phase_ == Phase::kWaitingForWay) move(context);
+    return;
+  }
   if (tag == kRenew) {
     if (phase_ != Phase::kMoving || !chosen_) return;
     note(helpers_.renew(context, router_));
@@ -147,6 +151,8 @@ std::string ReconfigureProgram::describeState() const {
       return fmt::format("waiting for {} helpers to compress", helpers_.waiting());
     case Phase::kMoving:
       return "moving";
+    case Phase::kWaitingForWay:
+      return "waiting for another motion to end";
     case Phase::kReleasing:
       return fmt::format("waiting for {} helpers to let go", helpers_.waiting());
   }

@@ -116,7 +116,16 @@ class ReconfigureProgram : public Program {
   const std::optional<std::string>& failure() const { return failure_; }
 
  private:
-  enum class Phase { kIdle, kWaiting, kAsking, kConfirming, kDeforming, kMoving, kReleasing };
+  enum class Phase {
+    kIdle,
+    kWaiting,
+    kAsking,
+    kConfirming,
+    kDeforming,
+    kMoving,
+    kWaitingForWay,
+    kReleasing
+  };
 
   // Timer tags. From kWatchdog on: a mover's watchdog for one round of asking, deforming or
   // releasing.
@@ -126,6 +135,7 @@ class ReconfigureProgram : public Program {
   static constexpr int kNewVersion = 4;
   static constexpr int kRenew = 5;
   static constexpr int kSpread = 6;
+  static constexpr int kRetryMove = 7;
   static constexpr int kWatchdog = 1000;
   // How long a helper holds a piston for a motion that does not come: the mover may have given up.
   static constexpr Time kLeaseTime = 60 * kSecond;
@@ -189,12 +199,18 @@ class ReconfigureProgram : public Program {
   // A helper's AckDeform or NackDeform.
   void onHelperAnswer(Context& context, const RoutedMsg& answer, bool granted);
   void move(Context& context);
+  // A motion refused for a cell or a pivot that another motion holds: waits for that motion's end
+  // and tries the same motion again, its helpers still compressed. False when it should not.
+  bool waitForTheWay(Context& context, const MoveResult& refused);
   void releaseHelpers(Context& context);
   void afterRelease(Context& context);
   // Whether this module holds a piston for another's motion, or is moving one.
   bool makingWay() const { return helping_.makingWay(); }
   // Whether this module is busy with a motion of its own: it makes way for nobody.
-  bool busy() const { return phase_ == Phase::kDeforming || phase_ == Phase::kMoving; }
+  bool busy() const {
+    return phase_ == Phase::kDeforming || phase_ == Phase::kMoving ||
+           phase_ == Phase::kWaitingForWay;
+  }
   void note(const Status& status);
 
   std::shared_ptr<const TargetShape> target_;
@@ -231,6 +247,9 @@ class ReconfigureProgram : public Program {
   // Rounds in a row in which no pivot knew a distance; past kRoundsBeforeFalling the mover falls.
   int roundsWithoutDistance_ = 0;
   static constexpr int kRoundsBeforeFalling = 5;
+  // Waits for the way in a row for one chosen motion; then the mover chooses again.
+  int waitsForTheWay_ = 0;
+  static constexpr int kMostWaitsForTheWay = 3;
   std::vector<std::pair<geometry::Cell, int>> failedGoals_;
   // The cells the mover has arrived at since it last went down the gradient, and how often.
   std::vector<std::pair<geometry::Cell, int>> visited_;

@@ -148,6 +148,37 @@ TEST_F(ActuatorsDocs, ShowWhatCompareWritesOnAReconfiguration) {
   pageShows("reconfiguration table", "scenes/reshape-heap.json --program reconfigure");
 }
 
+// A reconfiguration compared as `run` runs it: its target from another file (--target) and its
+// seed, each row the run's own.
+TEST_F(ActuatorsCommand, ComparesAReconfigurationWithItsTargetAndSeed) {
+  const std::string scene = path("line.json");
+  ASSERT_EQ(datomsim("generate reshape line -o " + scene).status, 0);
+  const std::string options = " --program reconfigure --target " + scene + " --seed 7";
+  const Outcome outcome =
+      datomsim("actuators compare " + scene + options +
+               " --combinations electro-ribbon+electrostatic --sizes 10cm -o " + path("line"));
+  ASSERT_EQ(outcome.status, 0) << outcome.output;
+  const std::string csv = testing::readText(path("line/compare.csv"));
+  ASSERT_EQ(
+      datomsim("run " + scene + options +
+               " --actuators electro-ribbon+electrostatic --size 10cm --out " + path("run.json"))
+          .status,
+      0);
+  const auto run = nlohmann::json::parse(testing::readText(path("run.json")));
+  const std::string row = "electro-ribbon+electrostatic-latch,10cm,0.1," +
+                          std::to_string(run["motions"].get<int>()) + "," +
+                          std::to_string(run["max_concurrent_motions"].get<int>()) + ",";
+  EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
+  // A target file without a target is refused, and nothing is written.
+  ASSERT_EQ(datomsim("generate box --size 2,2,1 -o " + path("box.json")).status, 0);
+  const Outcome noTarget =
+      datomsim("actuators compare " + scene + " --program reconfigure --target " +
+               path("box.json") + " -o " + path("none"));
+  EXPECT_EQ(noTarget.status, 1);
+  EXPECT_NE(noTarget.output.find("has no target"), std::string::npos) << noTarget.output;
+  EXPECT_FALSE(std::filesystem::exists(path("none")));
+}
+
 TEST_F(ActuatorsCommand, CompareRefusesBadValuesBeforeAnyRun) {
   const std::string scene = arch(1);
   for (const auto& [options, message] :

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The plot of `datomsim actuators compare` (docs/actuators.md, "The paper's experiment by
-combination and size"): energy per motion and makespan against the module's radius, one line per
-combination, both axes logarithmic.
+combination and size"): energy per motion, makespan and the ensemble's peak power against the
+module's radius, one line per combination, both axes logarithmic.
 
     scripts/actuators-plot.py DIR/compare.csv -o DIR/compare.png
 
@@ -20,7 +20,8 @@ def read_rows(path):
             rows = list(csv.DictReader(handle))
     except OSError as error:
         raise SystemExit(f"actuators-plot: {path}: {error.strerror}")
-    needed = {"combination", "radius_m", "makespan_s", "energy_per_motion_J", "failure"}
+    needed = {"combination", "radius_m", "makespan_s", "energy_per_motion_J", "peak_power_W",
+              "failure"}
     if not rows or not needed <= set(rows[0]):
         raise SystemExit(f"actuators-plot: {path}: not a compare.csv of datomsim actuators compare "
                          f"(expected the columns {', '.join(sorted(needed))})")
@@ -35,30 +36,27 @@ def plot(rows, path):
     except ImportError:
         raise SystemExit("actuators-plot: needs matplotlib (Debian: python3-matplotlib; "
                          "scripts/install-deps.sh installs it)")
-    figure, (energy, makespan) = plt.subplots(1, 2, figsize=(11, 4.5), dpi=120)
+    figure, panels = plt.subplots(1, 3, figsize=(15, 4.5), dpi=120)
+    columns = (("energy_per_motion_J", "energy per motion (J)", "Energy per motion"),
+               ("makespan_s", "makespan (s)", "Makespan"),
+               ("peak_power_W", "peak power (W)", "Peak power of the ensemble"))
     combinations = list(dict.fromkeys(r["combination"] for r in rows))
     for combination in combinations:
         mine = sorted((float(r["radius_m"]), r) for r in rows if r["combination"] == combination)
         radii = [radius for radius, _ in mine]
-        energy.plot(radii, [float(r["energy_per_motion_J"]) for _, r in mine], marker="o",
-                    label=combination)
-        makespan.plot(radii, [float(r["makespan_s"]) for _, r in mine], marker="o",
-                      label=combination)
-        for radius, r in mine:
-            if r["failure"]:
-                energy.scatter([radius], [float(r["energy_per_motion_J"])], marker="x",
-                               color="red", zorder=3)
-                makespan.scatter([radius], [float(r["makespan_s"])], marker="x", color="red",
-                                 zorder=3)
-    for axes, label in ((energy, "energy per motion (J)"), (makespan, "makespan (s)")):
+        for axes, (column, _, _) in zip(panels, columns):
+            axes.plot(radii, [float(r[column]) for _, r in mine], marker="o", label=combination)
+            failed = [(radius, float(r[column])) for radius, r in mine if r["failure"]]
+            if failed:
+                axes.scatter(*zip(*failed), marker="x", color="red", zorder=3)
+    for axes, (_, label, title) in zip(panels, columns):
         axes.set_xscale("log")
         axes.set_yscale("log")
         axes.set_xlabel("module radius r (m)")
         axes.set_ylabel(label)
         axes.grid(True, which="both", alpha=0.3)
-    energy.set_title("Energy per motion")
-    makespan.set_title("Makespan")
-    makespan.legend(fontsize=7)
+        axes.set_title(title)
+    panels[1].legend(fontsize=7)
     figure.tight_layout()
     # Written whole or not at all.
     folder = os.path.dirname(os.path.abspath(path))

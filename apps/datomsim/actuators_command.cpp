@@ -46,6 +46,14 @@ void addCompareSubcommand(CLI::App& group, const Reporter& reporter) {
   compare->add_option("--program", args->run.program, "The program to run (as run's)")->required();
   compare->add_option("--goal", args->run.goal, "Goal cell x,y,z (the gradient's programs)");
   compare->add_option("--start", args->run.start, "The mobile's start x,y,z");
+  compare->add_option("--target", args->run.target,
+                      "Take the target from this scene file instead of the scene's own "
+                      "(reconfigure)");
+  compare->add_option("--seed", args->run.seed, "Seed of the modules' random streams and delays")
+      ->capture_default_str();
+  compare->add_option("--timeout", args->run.timeoutS,
+                      "Simulated seconds after which each reconfiguration stops (default: run's, "
+                      "stretched with the actuators' times)");
   compare
       ->add_option("--combinations", args->combinations,
                    "DEFORMATION+LATCH,... (default: the six combinations)")
@@ -64,7 +72,9 @@ void addCompareSubcommand(CLI::App& group, const Reporter& reporter) {
     const std::filesystem::path folder(args->output);
     const std::string csv = (folder / "compare.csv").string();
     const std::string markdown = (folder / "compare.md").string();
-    CommandFiles files({{"scene", args->run.scene}, {"--designs", args->directory}},
+    CommandFiles files({{"scene", args->run.scene},
+                        {"--target", args->run.target},
+                        {"--designs", args->directory}},
                        {{"--output", csv}, {"--output", markdown}}, folder, "--output");
     args->run.actuatorDesigns = frontend::actuatorDesignDirectory(
         args->directory, args->directory.empty() ? unwrap(exporting::executableDirectory())

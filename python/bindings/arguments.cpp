@@ -174,4 +174,33 @@ std::optional<geometry::Cell> optionalCell(const Argument& argument, const py::h
   return cellArgument(argument, value, option);
 }
 
+std::string onOff(bool on) {
+  return on ? "on" : "off";
+}
+
+// The load model's parameters by their keywords, as `loads` and `run` take them.
+std::vector<std::pair<std::string, double*>> loadParameterKeywords(elastic::LoadParameters& p) {
+  return {{"radius", &p.radius},
+          {"thickness", &p.thickness},
+          {"density", &p.density},
+          {"solid_fraction", &p.solidFraction},
+          {"young_modulus", &p.youngModulus},
+          {"poisson_ratio", &p.poissonRatio},
+          {"latch_force", &p.latchForce},
+          {"latch_moment", &p.latchMoment}};
+}
+
+// Three numbers (x, y, z) as the command line's text "x,y,z".
+std::string vectorText(const Argument& argument, const py::handle& value) {
+  if (PyUnicode_Check(value.ptr()) || !PySequence_Check(value.ptr()) ||
+      PySequence_Size(value.ptr()) != 3) {
+    PyErr_Clear();
+    throw py::type_error(fmt::format("{} must be three numbers (x, y, z), m/s^2, got {}",
+                                     argument.named(), typeName(value)));
+  }
+  const py::sequence parts = py::reinterpret_borrow<py::sequence>(value);
+  return fmt::format("{},{},{}", numberArgument(argument, parts[0]),
+                     numberArgument(argument, parts[1]), numberArgument(argument, parts[2]));
+}
+
 }  // namespace datomsim::python

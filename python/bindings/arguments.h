@@ -10,7 +10,10 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "elastic/load_parameters.h"
 #include "geometry/cell.h"
 
 namespace datomsim::python {
@@ -50,5 +53,12 @@ geometry::Cell cellArgument(const Argument& argument, const py::handle& value,
                             const std::string& option);
 std::optional<geometry::Cell> optionalCell(const Argument& argument, const py::handle& value,
                                            const std::string& option);
+
+// "on" or "off", as the command line's switches take them.
+std::string onOff(bool on);
+// Three numbers (x, y, z) as the command line's text "x,y,z".
+std::string vectorText(const Argument& argument, const py::handle& value);
+// The load model's parameters by their keywords, as `loads` and `run` take them.
+std::vector<std::pair<std::string, double*>> loadParameterKeywords(elastic::LoadParameters& p);
 
 }  // namespace datomsim::python

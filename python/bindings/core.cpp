@@ -26,6 +26,7 @@
 #include "geometry/cell_text.h"
 #include "io/scene_file.h"
 #include "motion/motion.h"
+#include "run.h"
 #include "scene.h"
 #include "scene/box.h"
 #include "scene/paper_arch.h"
@@ -38,18 +39,6 @@ namespace {
 
 using frontend::UsageError;
 using geometry::Cell;
-
-std::string onOff(bool on) {
-  return on ? "on" : "off";
-}
-
-const Scene& sceneArgument(const Argument& argument, const py::object& value) {
-  if (!py::isinstance<Scene>(value)) {
-    throw py::type_error(
-        fmt::format("{} must be a datomsim.Scene, got {}", argument.named(), typeName(value)));
-  }
-  return value.cast<const Scene&>();
-}
 
 // The module, its rules and rolls as reach and moves take them, checked by the frontend as the
 // command line's options are.
@@ -119,37 +108,6 @@ std::string moves(const py::object& on, const py::object& at, const py::object& 
   return frontend::movesJson(cell, motion::evaluateAll(world, table, where, model.datom));
 }
 
-// The load model's parameters by their keywords, as `loads` and `run` take them.
-std::vector<std::pair<std::string, double*>> loadParameterKeywords(elastic::LoadParameters& p) {
-  return {{"radius", &p.radius},
-          {"thickness", &p.thickness},
-          {"density", &p.density},
-          {"solid_fraction", &p.solidFraction},
-          {"young_modulus", &p.youngModulus},
-          {"poisson_ratio", &p.poissonRatio},
-          {"latch_force", &p.latchForce},
-          {"latch_moment", &p.latchMoment}};
-}
-
-// The file a scene was read from, when it was: no output may overwrite it.
-std::vector<frontend::NamedPath> inputsOf(const Scene& scene) {
-  if (scene.source().empty()) return {};
-  return {{"scene", scene.source()}};
-}
-
-// Three numbers (x, y, z) as the command line's text "x,y,z".
-std::string vectorText(const Argument& argument, const py::handle& value) {
-  if (PyUnicode_Check(value.ptr()) || !PySequence_Check(value.ptr()) ||
-      PySequence_Size(value.ptr()) != 3) {
-    PyErr_Clear();
-    throw py::type_error(fmt::format("{} must be three numbers (x, y, z), m/s^2, got {}",
-                                     argument.named(), typeName(value)));
-  }
-  const py::sequence parts = py::reinterpret_borrow<py::sequence>(value);
-  return fmt::format("{},{},{}", numberArgument(argument, parts[0]),
-                     numberArgument(argument, parts[1]), numberArgument(argument, parts[2]));
-}
-
 // The JSON text of `loads --out`; the pictures asked for written as the command writes them.
 std::string loads(const py::object& on, const py::dict& options) {
   const Scene& scene = sceneArgument({"loads()", "scene"}, on);
@@ -206,132 +164,6 @@ std::string loads(const py::object& on, const py::dict& options) {
   frontend::writeLoadPictures(output, args, title, files);
   files.commit(frontend::Reporter(true));
   return frontend::loadsJson(output);
-}
-
-// A program parameter's value as `--param KEY=VALUE` gives it: a number, a string or a bool.
-std::string parameterText(const std::string& key, const py::handle& value) {
-  const Argument argument{"run()", "params' " + key};
-  if (PyBool_Check(value.ptr())) return value.ptr() == Py_True ? "true" : "false";
-  if (PyUnicode_Check(value.ptr())) return stringArgument(argument, value);
-  if (PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr())) {
-    return py::str(value).cast<std::string>();
-  }
-  throw py::type_error(fmt::format("{} must be a number, a string or a bool, got {}",
-                                   argument.named(), typeName(value)));
-}
-
-// One of run()'s keywords into the command line's arguments; false when `name` is none of
-// them.
-bool runKeyword(frontend::RunArguments& args, const std::string& name, const py::handle& value) {
-  const Argument argument{"run()", name};
-  if (name == "goal" || name == "start" || name == "root") {
-    const Cell cell = cellArgument(argument, value, "--" + name);
-    (name == "goal"    ? args.goal
-     : name == "start" ? args.start
-                       : args.root) = fmt::format("{},{},{}", cell.x, cell.y, cell.z);
-  } else if (name == "rules" || name == "module" || name == "rolling") {
-    (name == "rules"    ? args.rules.rules
-     : name == "module" ? args.module
-                        : args.rolling) = stringArgument(argument, value);
-  } else if (name == "target") {
-    args.target = pathArgument(argument, value);
-  } else if (name == "attachment") {
-    args.rules.attachment = onOff(booleanArgument(argument, value));
-  } else if (name == "connectivity") {
-    args.rules.connectivity = onOff(booleanArgument(argument, value));
-    args.connectivityGiven = true;
-  } else if (name == "seed") {
-    args.seed = std::to_string(unsignedArgument(argument, value));
-  } else if (name == "delay_ms" || name == "jitter_ms") {
-    (name == "delay_ms" ? args.delayMs : args.jitterMs) = numberArgument(argument, value);
-  } else if (name == "timeout" || name == "until") {
-    (name == "timeout" ? args.timeoutS : args.untilS) = numberArgument(argument, value);
-  } else if (name == "max_motions") {
-    // The range is the frontend's (1 or more), with the command line's message.
-    args.maxMotions = integerArgument(argument, value, INT64_MIN, INT64_MAX);
-  } else if (name == "trace") {
-    args.wantTrace = booleanArgument(argument, value);
-  } else if (name == "load_region") {
-    args.loadRegion = int(integerArgument(argument, value, INT32_MIN, INT32_MAX));
-    args.loadOptionsGiven.push_back("--load-region");
-  } else if (name == "gravity") {
-    // True or "on", False or "off", or three numbers.
-    if (PyBool_Check(value.ptr())) {
-      args.gravity = value.ptr() == Py_True ? "on" : "off";
-    } else if (PyUnicode_Check(value.ptr())) {
-      args.gravity = stringArgument(argument, value);
-    } else {
-      args.gravity = vectorText(argument, value);
-    }
-  } else if (name == "params") {
-    if (!PyDict_Check(value.ptr())) {
-      throw py::type_error(fmt::format("run(): params must be a dict, got {}", typeName(value)));
-    }
-    for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
-      const std::string text = stringArgument({"run()", "a key of params"}, key);
-      args.parameters.push_back(text + "=" + parameterText(text, item));
-    }
-  } else {
-    return false;
-  }
-  return true;
-}
-
-// (the JSON text of `run --out`, the trace or None, the failure or None).
-std::tuple<std::string, std::optional<std::string>, std::optional<std::string>> run(
-    const py::object& on, const py::object& name, const py::dict& options) {
-  const Scene& scene = sceneArgument({"run()", "scene"}, on);
-  frontend::RunArguments args;
-  args.program = stringArgument({"run()", "program"}, name);
-  std::optional<std::string> tracePath;
-  const std::vector<std::pair<std::string, double*>> loadNumbers =
-      loadParameterKeywords(args.loads);
-  std::string sceneName = scene.scene().name.value_or("a scene from Python");
-  for (const auto& [key, value] : options) {
-    const std::string option = stringArgument({"run()", "a keyword"}, key);
-    if (value.is_none()) continue;
-    const auto loadNumber = std::find_if(loadNumbers.begin(), loadNumbers.end(),
-                                         [&](const auto& entry) { return entry.first == option; });
-    if (loadNumber != loadNumbers.end()) {
-      // The load model's, named as the command line's options for the shared refusals.
-      *loadNumber->second = numberArgument({"run()", option}, value);
-      std::string flag = "--" + option;
-      std::replace(flag.begin(), flag.end(), '_', '-');
-      args.loadOptionsGiven.push_back(flag);
-    } else if (option == "scene_name") {
-      sceneName = stringArgument({"run()", option}, value);
-    } else if (option == "trace" && PyUnicode_Check(value.ptr())) {
-      // A path: the file to write the trace to (True: its text returned, by runKeyword).
-      tracePath = stringArgument({"run()", option}, value);
-      if (tracePath->empty()) throw UsageError("run: trace is an empty file name");
-      args.wantTrace = true;
-    } else if (!runKeyword(args, option, value)) {
-      throw UsageError(
-          fmt::format("run: unknown option {} (known: goal, start, rules, "
-                      "attachment, connectivity, seed, delay_ms, jitter_ms, "
-                      "max_motions, target, timeout, until, params, root, trace, module, "
-                      "rolling, gravity, load_region, radius, thickness, density, "
-                      "solid_fraction, young_modulus, poisson_ratio, latch_force, latch_moment)",
-                      option));
-    }
-  }
-  // The trace file checked against the scene's file and the target before the run, as `run
-  // --trace` is.
-  std::optional<frontend::CommandFiles> files;
-  if (tracePath) {
-    std::vector<frontend::NamedPath> inputs = inputsOf(scene);
-    if (!args.target.empty()) inputs.push_back({"target", args.target});
-    files.emplace(inputs, std::vector<frontend::NamedPath>{{"trace", *tracePath}});
-  }
-  frontend::RunOutput output = frontend::runOnScene(scene.scene(), sceneName, args);
-  std::optional<std::string> trace;
-  if (files) {
-    files->write("trace", output.result.trace);
-    files->commit(frontend::Reporter(true));
-  } else if (args.wantTrace) {
-    trace = std::move(output.result.trace);
-  }
-  return {frontend::runJson(output.kind.name, output.result), std::move(trace), output.failure};
 }
 
 // The JSON text of `geometry --json`; a fraction outside 0..1 refused as the option is.

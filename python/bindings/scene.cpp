@@ -64,4 +64,18 @@ Scene sceneOf(world::World world, std::string name) {
   return Scene(std::move(scene));
 }
 
+const Scene& sceneArgument(const Argument& argument, const py::object& value) {
+  if (!py::isinstance<Scene>(value)) {
+    throw py::type_error(
+        fmt::format("{} must be a datomsim.Scene, got {}", argument.named(), typeName(value)));
+  }
+  return value.cast<const Scene&>();
+}
+
+// The file a scene was read from, when it was: no output may overwrite it.
+std::vector<frontend::NamedPath> inputsOf(const Scene& scene) {
+  if (scene.source().empty()) return {};
+  return {{"scene", scene.source()}};
+}
+
 }  // namespace datomsim::python

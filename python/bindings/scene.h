@@ -185,4 +185,9 @@ class Scene {
 // A generated scene: its modules latched to their neighbours, and its name.
 Scene sceneOf(world::World world, std::string name);
 
+// A datomsim.Scene, or a TypeError naming the argument.
+const Scene& sceneArgument(const Argument& argument, const py::object& value);
+// The file a scene was read from, when it was: no output may overwrite it.
+std::vector<frontend::NamedPath> inputsOf(const Scene& scene);
+
 }  // namespace datomsim::python

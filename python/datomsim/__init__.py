@@ -199,7 +199,10 @@ def run(
     "on" or three numbers: motions weighed under the load model, docs/mechanics.md),
     ``load_region`` and the load model's parameters as :func:`loads` takes them
     (``latch_force``, ``density``...); ``params`` are the program's parameters. ``trace`` is a file to write the trace to (its path is then in the
-    result under "trace"), or True to have the trace's text there.
+    result under "trace"), or True to have the trace's text there. ``actuators``
+    ("DEFORMATION+LATCH", as ``--actuators``), ``size`` ("1cm"), ``designs`` (a folder) and
+    ``power_csv`` (a file) are the modules' actuators (docs/actuators.md): the result then has
+    the "energy" section ``run --out`` writes.
 
     A run that fails (the mobile does not arrive, the target is not built) is a result with its
     "reason", as ``run --out`` writes it; bad options raise :class:`Error`.

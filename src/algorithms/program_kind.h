@@ -26,8 +26,19 @@
 
 namespace datomsim::algorithms {
 
+// How much longer the modules' actuators (the run's --actuators, docs/actuators.md) take than the
+// fixed times a program's waits are set for; zero without actuators, so that a run keeps its times.
+struct ActuationWaits {
+  // A helper's piston from wherever it is to compressed: back to rest and latched (an SMA spring
+  // cools), then its connectors let go and it compresses.
+  Time piston = 0;
+  // A whole motion, with a double deformation.
+  Time motion = 0;
+};
+
 // What the programs of a run are told: the goal and the mobile (for programs that need a goal),
-// the target shape (for programs that build one), and the parameters given by name.
+// the target shape (for programs that build one), the parameters given by name, and how long the
+// actuators take.
 struct ProgramParameters {
   std::optional<geometry::Cell> goal;
   // The module that walks; it takes no part in the gradient.
@@ -36,6 +47,7 @@ struct ProgramParameters {
   // --param key=value and the scene's parameters for the program, checked against its
   // declaration; programs that declare none refuse any.
   std::map<std::string, std::string> given;
+  ActuationWaits waits;
 };
 
 // The modules of a run at its end, by slot (Context::slot), as a program set sees them when it

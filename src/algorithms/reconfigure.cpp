@@ -126,7 +126,7 @@ void ReconfigureProgram::onTimer(Context& context, int tag) {
   if (tag == kRenew) {
     if (phase_ != Phase::kMoving || !chosen_) return;
     note(helpers_.renew(context, router_));
-    context.setTimer(kLeaseTime / 2, kRenew);
+    context.setTimer(lease_ / 2, kRenew);
     return;
   }
   if (helping_.onTimer(context, tag)) return;
@@ -164,8 +164,9 @@ namespace {
 class ReconfigurePrograms final : public ProgramsBySlot<ReconfigureProgram> {
  public:
   ReconfigurePrograms(const ProgramParameters& parameters, size_t moduleCount)
-      : target_(parameters.target) {
-    fill(moduleCount, target_);
+      : target_(parameters.target),
+        helperTerms_(ReconfigureProgram::helperTerms(parameters.waits.motion)) {
+    fill(moduleCount, target_, helperTerms_, parameters.waits.piston);
   }
 
   std::optional<std::string> failure() const override { return firstFailure(); }
@@ -184,6 +185,7 @@ class ReconfigurePrograms final : public ProgramsBySlot<ReconfigureProgram> {
 
  private:
   std::shared_ptr<const TargetShape> target_;
+  HelperDuty::Terms helperTerms_;  // the programs' helpers hold them
 };
 
 }  // namespace

@@ -98,8 +98,22 @@ class ReconfigureProgram : public Program {
  public:
   static constexpr int32_t kUnknown = INT32_MAX;
 
-  explicit ReconfigureProgram(std::shared_ptr<const TargetShape> target)
-      : target_(std::move(target)) {}
+  // `helperTerms` must outlive the program (its set's, helperTerms); `pistonWait` is how much
+  // longer than the fixed times a helper's piston may take to answer (ActuationWaits::piston).
+  ReconfigureProgram(std::shared_ptr<const TargetShape> target,
+                     const HelperDuty::Terms& helperTerms, Time pistonWait)
+      : target_(std::move(target)),
+        pistonWait_(pistonWait),
+        lease_(helperTerms.lease),
+        helping_(helperTerms) {}
+
+  // The helpers' terms of a run whose motions take `motionWait` longer than the fixed times
+  // (ActuationWaits::motion): a grant outlasts the motion.
+  static HelperDuty::Terms helperTerms(Time motionWait) {
+    HelperDuty::Terms terms = kHelperTerms;
+    terms.lease += motionWait;
+    return terms;
+  }
 
   void onStart(Context& context) override;
   void onMessage(Context& context, int ownConnector, const Message& message) override;
@@ -180,7 +194,8 @@ class ReconfigureProgram : public Program {
   void stepIntoPocket(Context& context);
 
   // The mover (reconfigure_mover.cpp).
-  void watch(Context& context);
+  // `extra`: the time the round's pistons may take beyond the fixed times.
+  void watch(Context& context, Time extra = 0);
   void onWatchdog(Context& context, uint32_t round);
   void step(Context& context);
   void choose(Context& context);
@@ -214,6 +229,8 @@ class ReconfigureProgram : public Program {
   void note(const Status& status);
 
   std::shared_ptr<const TargetShape> target_;
+  Time pistonWait_ = 0;
+  Time lease_ = kLeaseTime;  // the helpers' (helperTerms), renewed at half of it
   Router router_;
   uint32_t nextRequest_ = 1;
 
@@ -259,7 +276,7 @@ class ReconfigureProgram : public Program {
   int lostReplies_ = 0;  // replies to movers that had moved on
 
   // This module's side as a helper of others' motions.
-  HelperDuty helping_{kHelperTerms};
+  HelperDuty helping_;
   std::optional<std::string> failure_;
 };
 

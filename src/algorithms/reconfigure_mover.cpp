@@ -8,9 +8,9 @@ namespace datomsim::algorithms {
 
 using geometry::Cell;
 
-void ReconfigureProgram::watch(Context& context) {
+void ReconfigureProgram::watch(Context& context, Time extra) {
   ++round_;
-  context.setTimer(kPatience, kWatchdog + int(round_ & 0xffffff));
+  context.setTimer(kPatience + extra, kWatchdog + int(round_ & 0xffffff));
 }
 
 void ReconfigureProgram::onWatchdog(Context& context, uint32_t round) {
@@ -170,7 +170,8 @@ void ReconfigureProgram::choose(Context& context) {
   // mixes in the mover's id, since the mover may have moved (its cell names nothing).
   note(helpers_.ask(context, router_, *chosen_,
                     [&] { return context.id().value * 0x9E3779B1u + nextRequest_++; }));
-  watch(context);
+  // The helpers answer once their pistons have compressed, or are back at rest.
+  watch(context, pistonWait_);
 }
 
 void ReconfigureProgram::onHelperAnswer(Context& context, const RoutedMsg& answer, bool granted) {
@@ -199,7 +200,7 @@ void ReconfigureProgram::move(Context& context) {
     releaseHelpers(context);
   } else if (moved.state() == MoveResult::State::kQueued) {
     // Waiting for its turn may outlast the helpers' leases: renewed while it waits.
-    context.setTimer(kLeaseTime / 2, kRenew);
+    context.setTimer(lease_ / 2, kRenew);
   }
 }
 
@@ -236,7 +237,7 @@ void ReconfigureProgram::releaseHelpers(Context& context) {
   phase_ = Phase::kReleasing;
   if (helpers_.size() == 0) return afterRelease(context);
   note(helpers_.letGo(context, router_));
-  watch(context);
+  watch(context, pistonWait_);
 }
 
 void ReconfigureProgram::afterRelease(Context& context) {

@@ -121,18 +121,29 @@ Result<MobileChoice> chooseMobile(const world::World& world, const Cell& goal,
 
 namespace {
 
+// A motion with a double deformation.
+Time motionTime(const sim::ActuationTimes& times) {
+  return times.firstTurn() + times.middle() + times.doubleDeformation() + times.secondTurn();
+}
+
 // How many times longer than the fixed times a motion with a double deformation takes with the
 // run's actuators (at least 1), rounded up.
 Time paceOf(const sim::SimulationOptions& options) {
   if (!options.actuators) return 1;
-  const auto motionTime = [](const sim::ActuationTimes& times) {
-    return times.firstTurn() + times.middle() + times.doubleDeformation() + times.secondTurn();
-  };
   const Time fixed =
       motionTime(sim::ActuationTimes::fixed(options.deformationTime, options.quarterTurnTime));
   const Time actuated =
       motionTime(sim::ActuationTimes::of(*options.actuators, options.quarterTurnTime));
   return std::max<Time>(1, (actuated + fixed - 1) / std::max<Time>(1, fixed));
+}
+
+// What the programs wait for a piston or a motion beyond the fixed times: the actuated times
+// whole (the fixed ones are within the programs' own patience).
+algorithms::ActuationWaits waitsOf(const sim::SimulationOptions& options) {
+  if (!options.actuators) return {};
+  const sim::ActuationTimes times =
+      sim::ActuationTimes::of(*options.actuators, options.quarterTurnTime);
+  return {.piston = times.doubleDeformation(), .motion = motionTime(times)};
 }
 
 }  // namespace
@@ -245,9 +256,10 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
     }
   }
 
-  auto made =
-      algorithms::makePrograms(request.program, {request.goal, mobile, shape, request.parameters},
-                               world.size(), request.added);
+  auto made = algorithms::makePrograms(
+      request.program,
+      {request.goal, mobile, shape, request.parameters, waitsOf(request.simulation)}, world.size(),
+      request.added);
   if (!made.ok()) return Error{made.error()};
   // Shared from here on: the program's sections read after the run (RunEnd::keep) keep it.
   std::shared_ptr<algorithms::ProgramSet> programs = std::move(*made);

@@ -72,6 +72,7 @@ std::vector<CompareRow> compareActuators(const io::Scene& scene, const std::stri
       row.failure = output.failure.value_or("");
       const sim::Statistics& statistics = output.result.statistics;
       row.motions = statistics.motions;
+      row.mostAtOnce = statistics.maxConcurrentMotions;
       row.makespan = double(statistics.lastMotionEnd) / kSecond;
       if (const auto& energy = output.result.energy) {
         row.total = energy->total;
@@ -98,29 +99,31 @@ std::vector<CompareRow> compareActuators(const io::Scene& scene, const std::stri
 
 std::string compareCsv(const std::vector<CompareRow>& rows) {
   std::string text =
-      "combination,size,radius_m,motions,makespan_s,total_J,energy_per_motion_J,peak_power_W,"
+      "combination,size,radius_m,motions,most_at_once,makespan_s,total_J,energy_per_motion_J,peak_"
+      "power_W,"
       "heated_share,latch_force_per_weight,piston_force_margin,failure\n";
   for (const CompareRow& row : rows) {
-    text +=
-        fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", row.combination, row.size,
-                    number(row.radius), row.motions, number(row.makespan), number(row.total),
-                    number(row.perMotion), number(row.peakPower), number(row.heatedShare),
-                    number(row.latchPerWeight), number(row.pistonMargin), csvField(row.failure));
+    text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", row.combination, row.size,
+                        number(row.radius), row.motions, row.mostAtOnce, number(row.makespan),
+                        number(row.total), number(row.perMotion), number(row.peakPower),
+                        number(row.heatedShare), number(row.latchPerWeight),
+                        number(row.pistonMargin), csvField(row.failure));
   }
   return text;
 }
 
 std::string compareMarkdown(const std::vector<CompareRow>& rows) {
   std::string text =
-      "| combination | r | motions | makespan (s) | energy (J) | per motion (J) | peak power (W) "
+      "| combination | r | motions | at once | makespan (s) | energy (J) | per motion (J) | peak "
+      "power (W) "
       "| heated share | latch force / weight | piston force margin |\n"
-      "|---|---|---|---|---|---|---|---|---|---|\n";
+      "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const CompareRow& row : rows) {
     text += fmt::format(
-        "| {} | {} | {}{} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {:.3f} | {:.4g} | {} |\n",
+        "| {} | {} | {}{} | {} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {:.3f} | {:.4g} | {} |\n",
         row.combination, row.size, row.motions, row.failure.empty() ? "" : " (failed)",
-        row.makespan, row.total, row.perMotion, row.peakPower, row.heatedShare, row.latchPerWeight,
-        short4(row.pistonMargin));
+        row.mostAtOnce, row.makespan, row.total, row.perMotion, row.peakPower, row.heatedShare,
+        row.latchPerWeight, short4(row.pistonMargin));
   }
   return text;
 }

@@ -17,6 +17,7 @@ struct CompareRow {
   double radius = 0;        // m
   std::string failure;      // why the run did not do what it was asked; empty when it did
   uint64_t motions = 0;
+  int mostAtOnce = 0;         // motions in flight at once, at most
   double makespan = 0;        // s
   double total = 0;           // J
   double perMotion = 0;       // J
@@ -35,7 +36,7 @@ std::vector<CompareRow> compareActuators(const io::Scene& scene, const std::stri
                                          const std::vector<std::string>& combinations,
                                          const std::vector<std::string>& sizes);
 
-// "combination,size,radius_m,motions,makespan_s,total_J,energy_per_motion_J,peak_power_W,
+// "combination,size,radius_m,motions,most_at_once,makespan_s,total_J,energy_per_motion_J,peak_power_W,
 // heated_share,latch_force_per_weight,piston_force_margin,failure"
 std::string compareCsv(const std::vector<CompareRow>& rows);
 // The same as a markdown table, four significant digits.

@@ -90,7 +90,8 @@ TEST_F(ActuatorsCommand, ComparesCombinationsAndSizesOnARun) {
     begin = end + 1;
   }
   ASSERT_EQ(lines.size(), 5u) << csv;
-  EXPECT_EQ(lines[0].rfind("combination,size,radius_m,motions,makespan_s,total_J,", 0), 0u);
+  EXPECT_EQ(lines[0].rfind("combination,size,radius_m,motions,most_at_once,makespan_s,total_J,", 0),
+            0u);
   EXPECT_EQ(lines[1].rfind("sma-spring+electrostatic-latch,1mm,0.001,", 0), 0u) << lines[1];
   EXPECT_EQ(lines[4].rfind("electro-ribbon+mechanical-latch,10cm,0.1,", 0), 0u) << lines[4];
   // Each row is the run's own: its total is what run --actuators writes.
@@ -105,33 +106,77 @@ TEST_F(ActuatorsCommand, ComparesCombinationsAndSizesOnARun) {
     fields.push_back(lines[4].substr(begin, comma - begin));
     begin = comma + 1;
   }
-  ASSERT_GE(fields.size(), 11u);
-  EXPECT_NEAR(std::stod(fields[5]), json["energy"]["total_J"].get<double>(),
+  ASSERT_GE(fields.size(), 12u);
+  EXPECT_EQ(std::stoi(fields[4]), json["max_concurrent_motions"].get<int>());
+  EXPECT_NEAR(std::stod(fields[6]), json["energy"]["total_J"].get<double>(),
               1e-5 * json["energy"]["total_J"].get<double>());
   // The ribbons' pull at 10 cm is a thirty-third of what is asked (docs/actuators.md).
-  EXPECT_NEAR(std::stod(fields[10]), 0.02926, 1e-4);
+  EXPECT_NEAR(std::stod(fields[11]), 0.02926, 1e-4);
   const std::string markdown = testing::readText(path("compare/compare.md"));
   EXPECT_NE(markdown.find("| sma-spring+electrostatic-latch | 1mm | "), std::string::npos)
       << markdown;
 }
 
-// docs/actuators.md shows the comparison on the paper's arch: the page must be what the command
-// writes (paste DIR/compare.md between the markers when the models change).
-TEST_F(ActuatorsCommand, TheDocsShowWhatCompareWrites) {
-  const std::string source = DATOMSIM_SOURCE_DIR;
-  const Outcome outcome = datomsim("actuators compare " + source +
-                                   "/scenes/paper-arch-hole2.json --program follow-gradient "
-                                   "--goal 6,5,2 --start 0,0,2 -o " +
-                                   path("arch"));
+// docs/actuators.md shows the comparison on the paper's arch and on a reconfiguration: the page
+// must be what the command writes (paste DIR/compare.md between the markers when the models
+// change).
+class ActuatorsDocs : public ActuatorsCommand {
+ protected:
+  void pageShows(const std::string& marker, const std::string& arguments) {
+    const std::string source = DATOMSIM_SOURCE_DIR;
+    const Outcome outcome =
+        datomsim("actuators compare " + source + "/" + arguments + " -o " + path("compare"));
+    ASSERT_EQ(outcome.status, 0) << outcome.output;
+    const std::string page = testing::readText(source + "/docs/actuators.md");
+    const std::string begin = "<!-- " + marker + ": begin -->\n";
+    const size_t from = page.find(begin);
+    const size_t to = page.find("<!-- " + marker + ": end -->");
+    ASSERT_NE(from, std::string::npos) << marker;
+    ASSERT_NE(to, std::string::npos) << marker;
+    EXPECT_EQ(page.substr(from + begin.size(), to - from - begin.size()),
+              testing::readText(path("compare/compare.md")));
+  }
+};
+
+TEST_F(ActuatorsDocs, ShowWhatCompareWritesOnTheArch) {
+  pageShows("experiment table",
+            "scenes/paper-arch-hole2.json --program follow-gradient --goal 6,5,2 --start 0,0,2");
+}
+
+// The heap's 183 modules, about 500 motions at each of the 18 combinations and sizes: 6 to 9 s.
+TEST_F(ActuatorsDocs, ShowWhatCompareWritesOnAReconfiguration) {
+  pageShows("reconfiguration table", "scenes/reshape-heap.json --program reconfigure");
+}
+
+// A reconfiguration compared as `run` runs it: its target from another file (--target) and its
+// seed, each row the run's own.
+TEST_F(ActuatorsCommand, ComparesAReconfigurationWithItsTargetAndSeed) {
+  const std::string scene = path("line.json");
+  ASSERT_EQ(datomsim("generate reshape line -o " + scene).status, 0);
+  const std::string options = " --program reconfigure --target " + scene + " --seed 7";
+  const Outcome outcome =
+      datomsim("actuators compare " + scene + options +
+               " --combinations electro-ribbon+electrostatic --sizes 10cm -o " + path("line"));
   ASSERT_EQ(outcome.status, 0) << outcome.output;
-  const std::string page = testing::readText(source + "/docs/actuators.md");
-  const std::string begin = "<!-- experiment table: begin -->\n";
-  const size_t from = page.find(begin);
-  const size_t to = page.find("<!-- experiment table: end -->");
-  ASSERT_NE(from, std::string::npos);
-  ASSERT_NE(to, std::string::npos);
-  EXPECT_EQ(page.substr(from + begin.size(), to - from - begin.size()),
-            testing::readText(path("arch/compare.md")));
+  const std::string csv = testing::readText(path("line/compare.csv"));
+  ASSERT_EQ(
+      datomsim("run " + scene + options +
+               " --actuators electro-ribbon+electrostatic --size 10cm --out " + path("run.json"))
+          .status,
+      0);
+  const auto run = nlohmann::json::parse(testing::readText(path("run.json")));
+  const std::string row = "electro-ribbon+electrostatic-latch,10cm,0.1," +
+                          std::to_string(run["motions"].get<int>()) + "," +
+                          std::to_string(run["max_concurrent_motions"].get<int>()) + ",";
+  EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
+  // A target file without a target is refused, and nothing is written.
+  ASSERT_EQ(datomsim("generate box --size 2,2,1 -o " + path("box.json")).status, 0);
+  const Outcome noTarget =
+      datomsim("actuators compare " + scene + " --program reconfigure --target " +
+               path("box.json") + " -o " + path("none"));
+  EXPECT_EQ(noTarget.status, 1);
+  EXPECT_NE(noTarget.output.find("has no target"), std::string::npos) << noTarget.output;
+  EXPECT_FALSE(std::filesystem::exists(path("none")));
 }
 
 TEST_F(ActuatorsCommand, CompareRefusesBadValuesBeforeAnyRun) {

@@ -122,7 +122,7 @@ TEST_F(ActuatorsRun, ARunWithoutActuatorsKeepsItsOutput) {
 // stretch with the motions' time.
 TEST_F(ActuatorsRun, SlowActuatorsStillBuildTheArch) {
   const std::string scene = path("reshape.json");
-  ASSERT_EQ(datomsim("generate reshape arch2 -o " + scene).status, 0);
+  ASSERT_EQ(datomsim("generate reshape arch1 -o " + scene).status, 0);
   const Outcome outcome =
       datomsim("run " + scene +
                " --program reconfigure --actuators sma-spring+electromagnetic --size 10cm --out " +

@@ -180,6 +180,18 @@ std::string headerProblem(const Json& header) {
       }
     }
   }
+  // Optional: what the actuators draw (a run with --actuators), for the energy colouring.
+  const Json& actuators = field(header, "actuators");
+  if (!actuators.is_null()) {
+    if (!actuators.is_object()) return "\"actuators\" must be an object";
+    for (const char* key :
+         {"compress_J", "release_J", "latch_J", "unlatch_J", "holding_W", "latch_s", "unlatch_s"}) {
+      const Json& value = field(actuators, key);
+      if (!isFiniteNumber(value) || value.get<double>() < 0) {
+        return fmt::format("\"actuators.{}\" must be a number >= 0, not {}", key, stringify(value));
+      }
+    }
+  }
   return {};
 }
 

@@ -373,6 +373,11 @@ Result<std::string> viewerHtml(const std::string& bundle, const ViewerPage& page
     html += scriptSafeJson(*page.overlay);
     html += "</script>\n";
   }
+  if (page.loads) {
+    html += "<script type=\"application/json\" id=\"datomsim-loads\">";
+    html += scriptSafeJson(*page.loads);
+    html += "</script>\n";
+  }
   html += "<script>\n";
   html += bundle;
   html += "\n</script>\n</body>\n</html>\n";

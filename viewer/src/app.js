@@ -4,25 +4,16 @@
 // timeline.frameAt(t), so the speed, pauses and seeks never change what is shown at a given t.
 import { PART_SCHEMES, PATH_COLOR, TARGET_EMPTY, TARGET_FILLED, distanceLegend, rgbToCss } from './colors.js';
 import { formatSeconds } from './format.js';
+import { Colourings } from './colourings.js';
 import { formatFragment, parseFragment } from './fragment.js';
 import { Kinematics } from './kinematics.js';
+import { element, fillPanel } from './panel.js';
 import { ConcurrencyStrip } from './strip.js';
 import { Timeline } from './timeline.js';
 import { CATOM3D, DATOM, nextChangeTime, previousChangeTime } from './trace.js';
 import { View3D } from './view3d.js';
 
 export const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 4, 8, 16, 32];
-
-function element(tag, attributes = {}, children = []) {
-  const node = document.createElement(tag);
-  for (const [key, value] of Object.entries(attributes)) {
-    if (key === 'text') node.textContent = value;
-    else if (key === 'className') node.className = value;
-    else node.setAttribute(key, value);
-  }
-  for (const child of children) node.appendChild(child);
-  return node;
-}
 
 function button(label, title, onClick) {
   const b = element('button', { type: 'button', title, 'aria-label': title });
@@ -59,27 +50,13 @@ function mobileList(motions, limit = 12) {
   return ids.join(', ');
 }
 
-// What a module does in the motions in flight: mobile, pivot, or a blocking module making way.
-export function motionRoles(motions, id) {
-  const roles = [];
-  for (const m of motions) {
-    const to = `(${m.goal.join(', ')}), ${formatTime(m.t)} \u2013 ${formatTime(m.end)}`;
-    if (m.m === id) roles.push(`mobile, about pivot ${m.pivot} to ${to}`);
-    if (m.pivot === id) roles.push(`pivot of ${m.m} (to ${to})`);
-    if (m.blockers.includes(id)) roles.push(`makes way for ${m.m} (to ${to})`);
-  }
-  return roles;
-}
-
-function formatVector(v) {
-  return `(${v.map((x) => Number(x.toFixed(3))).join(', ')})`;
-}
-
 export class App {
-  constructor(root, trace, overlay) {
+  // loads: the page's latch loads document (colouring.js checks it against the trace), or null.
+  constructor(root, trace, overlay, loads = null) {
     this.root = root;
     this.trace = trace;
     this.timeline = new Timeline(trace);
+    this.colourings = new Colourings(trace, this.timeline, loads);
     this.kinematics = new Kinematics(trace.header);
     // A 3D Catom has no pistons: what tells of them (the panel's pistons, the connector colours of
     // the Datom's figures) is left out for Catoms.
@@ -147,6 +124,7 @@ export class App {
           (this.duration > 0 ? `, ${formatTime(this.duration)}` : ', scene (no changes)'),
       }),
       this.distanceLine,
+      this.colourings.legend,
       this.targetLine,
       this.motionLine,
       this.noteLine,
@@ -230,6 +208,7 @@ export class App {
     });
     // A Catom's connectors are always a darker shade of its colour.
     this.schemeSelect.hidden = this.catoms;
+    this.colourings.select.addEventListener('change', () => this.setColouring(this.colourings.select.value));
 
     const disabled = this.duration <= 0;
     const transport = [
@@ -256,6 +235,7 @@ export class App {
         this.latchesToggle.wrapper,
         this.focusToggle.wrapper,
         this.schemeSelect,
+        this.colourings.select,
         button('fit', 'Fit the scene (F)', () => this.fit('3d')),
         button('top', 'Seen from the top, as the paper\'s distance maps (T)', () => this.fit('top')),
       ]),
@@ -266,7 +246,8 @@ export class App {
     this.help = element('div', {
       className: 'dv-help',
       text: 'drag: orbit \u00B7 right-drag: pan \u00B7 wheel: zoom \u00B7 click: module \u00B7 space: play \u00B7 \u2190 \u2192: step \u00B7 F: fit \u00B7 T: top \u00B7 L: labels \u00B7 X: focus' +
-        (this.trace.targets.length ? ' \u00B7 G: target' : ''),
+        (this.trace.targets.length ? ' \u00B7 G: target' : '') +
+        (this.colourings.modes.length > 1 ? ' \u00B7 C: colours' : ''),
     });
     this.root.append(this.canvasHolder, this.top, this.panel, this.help, this.bar);
   }
@@ -326,6 +307,11 @@ export class App {
         case 'g':
         case 'G':
           if (this.targets.length) this.setTargetsVisible(!this.targetsToggle.input.checked);
+          return;
+        case 'c':
+        case 'C':
+          this.colourings.next();
+          this.redraw();
           return;
         case 'Escape':
           this.select(-1);
@@ -458,6 +444,8 @@ export class App {
   redraw() {
     const frame = this.timeline.frameAt(this.time);
     this.frame = frame;
+    this.colourings.prepare(frame);
+    this.view.colouring = this.colourings.hook();
     this.view.update(frame);
     this.view.render();
     this.slider.value = String(this.time);
@@ -570,42 +558,21 @@ export class App {
       this.panel.hidden = true;
       return;
     }
-    const m = this.frame.modules[index];
-    const rows = [
-      ['module', String(m.id)],
-      ['cell', m.inTransit ? `${m.cell.join(', ')} (moving)` : m.cell.join(', ')],
-      ['orientation', String(m.o)],
-      ['position', formatVector(m.position.toArray())],
-    ];
-    if (!this.catoms) {
-      rows.push(['piston', m.piston < 0 ? 'all at rest' : `${m.piston} at ${(100 * m.fraction).toFixed(0)} %`]);
-      for (const other of m.otherPistons) {
-        rows.push(['also', `piston ${other.p} at ${(100 * other.fraction).toFixed(0)} %`]);
-      }
-    }
-    for (const role of motionRoles(this.frame.motions, m.id)) rows.push(['motion', role]);
-    const latched = [];
-    for (let c = 0; c < 12; ++c) {
-      if (!(m.latches & (1 << c))) continue;
-      const partner = this.timeline.latchPartner(this.frame, index, c);
-      latched.push(partner ? `${c} \u2192 ${partner.m}:${partner.c}` : String(c));
-    }
-    rows.push(['latches', latched.length ? latched.join(', ') : 'none']);
-    rows.push(['', 'own connector \u2192 module:its connector']);
-    const swatch = element('span', { className: 'dv-swatch' });
-    swatch.style.background = rgbToCss(m.rgb);
-    this.panel.replaceChildren(
-      element('div', { className: 'dv-panel-title' }, [swatch, document.createTextNode(`${this.catoms ? '3D Catom' : 'Datom'} ${m.id}`)]),
-      element(
-        'table',
-        {},
-        rows.map(([key, value]) =>
-          element('tr', {}, [element('th', { text: key }), element('td', { text: value })]),
-        ),
-      ),
-      button('close', 'Deselect (Esc)', () => this.select(-1)),
-    );
+    fillPanel(this.panel, {
+      frame: this.frame,
+      index,
+      catoms: this.catoms,
+      timeline: this.timeline,
+      extraRows: this.colourings.panelRows(this.frame.modules[index]),
+      closeButton: button('close', 'Deselect (Esc)', () => this.select(-1)),
+    });
     this.panel.hidden = false;
+  }
+
+  // The colouring shown: 'own', 'loads' or 'energy' (those the page has).
+  setColouring(mode) {
+    this.colourings.setMode(mode);
+    this.redraw();
   }
 
   // What the end-to-end test and the console can drive.
@@ -683,6 +650,9 @@ export class App {
         legend: this.targetLine.hidden ? null : `${this.targetText.textContent} ${this.filledText.textContent}`,
       }),
       setTargets: (on) => this.setTargetsVisible(on),
+      // The colourings: which the page has, the one shown, its legend and counts.
+      colouring: () => this.colourings.state(),
+      setColouring: (mode) => this.setColouring(mode),
       setTargetShape: (k) => this.setTargetShape(k),
     };
   }

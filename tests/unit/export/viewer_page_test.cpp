@@ -57,7 +57,7 @@ std::string elementText(const std::string& html, const std::string& id) {
 }
 
 TEST(ViewerHtml, InlinesTheTraceTheOverlayAndTheViewer) {
-  ViewerPage page{"two & <modules>", smallTrace(), R"({"distances":[[1,2,3,0]]})"};
+  ViewerPage page{"two & <modules>", smallTrace(), R"({"distances":[[1,2,3,0]]})", std::nullopt};
   const auto html = viewerHtml(kBundle, page);
   ASSERT_TRUE(html.ok()) << html.error();
   EXPECT_EQ(html->rfind("<!DOCTYPE html>", 0), 0u);
@@ -257,7 +257,7 @@ TEST(PageForFile, RefusesWhatIsNeitherATraceNorAScene) {
 
 TEST(WriteViewerPage, WritesThePageOrNothing) {
   TemporaryDirectory directory;
-  const ViewerPage page{"t", smallTrace(), std::nullopt};
+  const ViewerPage page{"t", smallTrace(), std::nullopt, std::nullopt};
   ASSERT_TRUE(writeViewerPage(directory.path() / "p.html", kBundle, page).ok());
   EXPECT_EQ(testing::readText(directory.path() / "p.html"), *viewerHtml(kBundle, page));
   EXPECT_FALSE(writeViewerPage(directory.path() / "q.html", "</script>", page).ok());

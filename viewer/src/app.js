@@ -7,6 +7,7 @@ import { formatSeconds } from './format.js';
 import { Colourings } from './colourings.js';
 import { formatFragment, parseFragment } from './fragment.js';
 import { Kinematics } from './kinematics.js';
+import { OverloadMarks } from './latch_marks.js';
 import { element, fillPanel } from './panel.js';
 import { ConcurrencyStrip } from './strip.js';
 import { Timeline } from './timeline.js';
@@ -79,6 +80,7 @@ export class App {
     this.buildDom();
     this.view = new View3D(this.canvasHolder, this.timeline, this.kinematics, overlay, { shadows: this.shadows });
     this.view.setOverlayVisible(true);
+    this.marks = new OverloadMarks(this.view.scene, trace.header.spacing, this.colourings.loads?.overloaded ?? 0);
     this.overlayToggle.wrapper.hidden = !overlay;
     if (this.strip) this.strip.draw();
     this.installInput();
@@ -446,6 +448,7 @@ export class App {
     this.frame = frame;
     this.colourings.prepare(frame);
     this.view.colouring = this.colourings.hook();
+    this.marks.update(this.colourings.overloadedPoints());
     this.view.update(frame);
     this.view.render();
     this.slider.value = String(this.time);

@@ -2,7 +2,7 @@
 // (a page made with `datomsim view --loads`) and modules by the energy spent (a trace of a run
 // with --actuators). Its select in the control bar (key C cycles), its legend under the title, the
 // colours View3D asks for, and the panel's rows.
-import { rgbToCss } from './colors.js';
+import { partColor, rgbToCss } from './colors.js';
 import {
   ENERGY_RAMP,
   EnergyAccount,
@@ -17,6 +17,9 @@ import {
   safetyColor,
 } from './colouring.js';
 import { formatSeconds } from './format.js';
+
+// A connector not latched, while latches are coloured: a grey darker than the bodies.
+const UNLATCHED = [140, 145, 154];
 
 const NAMES = { own: 'colours: own', loads: 'colours: latch loads', energy: 'colours: energy spent' };
 
@@ -68,12 +71,16 @@ export class Colourings {
         moduleRgb: () => LOADS_BODY,
         connectorRgb: (m, connector) => {
           const at = latchLoadAt(this.loads, this.frame, m.index, connector, this.timeline, this.header);
-          if (!at) return null;
+          if (!at) return UNLATCHED;
           return at.stale ? STALE_LATCH : safetyColor(at.load.safety);
         },
       };
     }
-    if (this.mode === 'energy') return { moduleRgb: (m) => energyColor(this.spent[m.index], this.energy.max) };
+    if (this.mode === 'energy') {
+      const rgb = (m) => energyColor(this.spent[m.index], this.energy.max);
+      // Connectors a dark tint of the module's energy colour: the paper's red would read as heat.
+      return { moduleRgb: rgb, connectorRgb: (m) => partColor('connector', rgb(m), 'tint') };
+    }
     return null;
   }
 
@@ -91,6 +98,21 @@ export class Colourings {
 
   next() {
     this.setMode(this.modes[(this.modes.indexOf(this.mode) + 1) % this.modes.length]);
+  }
+
+  // The centres of the overloaded latches still in force, [x, y, z] each, in loads mode.
+  overloadedPoints() {
+    if (this.mode !== 'loads') return [];
+    const points = [];
+    for (const m of this.frame.modules) {
+      for (let c = 0; c < 12; ++c) {
+        const at = latchLoadAt(this.loads, this.frame, m.index, c, this.timeline, this.header);
+        if (!at || at.stale || m.id > at.partner || !(at.load.safety !== null && at.load.safety < 1)) continue;
+        const other = this.frame.modules[this.timeline.indexOfId.get(at.partner)];
+        points.push([0, 1, 2].map((k) => (m.position.getComponent(k) + other.position.getComponent(k)) / 2));
+      }
+    }
+    return points;
   }
 
   // Counts of the latches now: by band, stale, overloaded (only those still in force).
@@ -121,7 +143,8 @@ export class Colourings {
   // "latch safety factor (loads of the start, file): [below 1: overloaded] 2 ... [moved: stale] 5"
   loadsLegend() {
     const { byBand, stale, overloaded } = this.latchCounts();
-    const parts = [span('', `latch safety factor (${this.loads.file}, the scene at the start):`)];
+    const file = this.loads.file.split('/').pop();
+    const parts = [span('', `latch safety factor (${file}, the scene at the start):`)];
     SAFETY_BANDS.forEach((band, k) => {
       parts.push(span('dv-legend-item', ''));
       parts[parts.length - 1].append(swatch(band.rgb, band.label), `${band.label}: ${byBand[k]}`);

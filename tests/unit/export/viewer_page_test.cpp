@@ -75,14 +75,14 @@ TEST(ViewerHtml, InlinesTheTraceTheOverlayAndTheViewer) {
 }
 
 TEST(ViewerHtml, LeavesTheOverlayOutWhenThereIsNone) {
-  const auto html = viewerHtml(kBundle, {"t", smallTrace(), std::nullopt});
+  const auto html = viewerHtml(kBundle, {"t", smallTrace(), std::nullopt, std::nullopt});
   ASSERT_TRUE(html.ok());
   EXPECT_EQ(html->find("datomsim-overlay"), std::string::npos);
 }
 
 TEST(ViewerHtml, RefusesAViewerScriptThatWouldBreakOutOfItsElement) {
   for (const std::string bundle : {"var a = '</SCRIPT>';", "var b = '<!-- x';"}) {
-    const auto html = viewerHtml(bundle, {"t", smallTrace(), std::nullopt});
+    const auto html = viewerHtml(bundle, {"t", smallTrace(), std::nullopt, std::nullopt});
     ASSERT_FALSE(html.ok()) << bundle;
     EXPECT_NE(html.error().find("cannot be inlined"), std::string::npos);
   }

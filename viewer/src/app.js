@@ -4,6 +4,7 @@
 // timeline.frameAt(t), so the speed, pauses and seeks never change what is shown at a given t.
 import { PART_SCHEMES, PATH_COLOR, TARGET_EMPTY, TARGET_FILLED, distanceLegend, rgbToCss } from './colors.js';
 import { formatSeconds } from './format.js';
+import { viewerApi } from './api.js';
 import { Colourings } from './colourings.js';
 import { formatFragment, parseFragment } from './fragment.js';
 import { Kinematics } from './kinematics.js';
@@ -578,85 +579,8 @@ export class App {
     this.redraw();
   }
 
-  // What the end-to-end test and the console can drive.
+  // What the end-to-end test and the console can drive (api.js).
   api() {
-    return {
-      ready: true,
-      duration: this.duration,
-      changeTimes: this.trace.changeTimes,
-      moduleCount: this.trace.header.modules.length,
-      moduleKind: this.moduleKind,
-      // The instanced meshes drawn (their kind and instance count) and, for Catoms, the bodies'
-      // centres as drawn.
-      drawn: () => this.view.drawn(),
-      time: () => this.time,
-      seek: (t) => this.pauseAndSeek(t),
-      step: () => this.step(),
-      stepBack: () => this.stepBack(),
-      play: () => this.play(),
-      pause: () => this.pause(),
-      setSpeed: (s) => {
-        this.speed = s;
-        this.speedSelect.value = String(s);
-      },
-      selectId: (id) => this.select(this.timeline.indexOfId.get(id) ?? -1),
-      selectedInfo: () => (this.panel.hidden ? null : this.panel.innerText),
-      screenPositionOf: (id) => this.view.screenPositionOf(this.timeline.indexOfId.get(id)),
-      setLabels: (on) => this.setLabelsVisible(on),
-      setOverlay: (on) => this.setOverlayVisible(on),
-      setFocus: (on) => this.setFocus(on),
-      setLatches: (on) => {
-        this.latchesToggle.input.checked = on;
-        this.view.showLatches = on;
-        this.redraw();
-      },
-      fit: (view) => this.fit(view === 'front' ? '3d' : view),
-      videoFrame: (t) => this.videoFrame(t),
-      videoTurn: (degrees) => this.videoTurn(degrees),
-      fragment: () => window.location.hash,
-      distanceLegend: () => (this.distanceLine.hidden ? null : this.distanceLine.innerText.replace(/\s+/g, ' ').trim()),
-      camera: (position, target) => {
-        this.view.camera.position.set(...position);
-        this.view.controls.target.set(...target);
-        this.view.controls.update();
-        this.view.render();
-      },
-      modulePose: (id) => {
-        const m = this.frame.modules[this.timeline.indexOfId.get(id)];
-        return { position: m.position.toArray(), piston: m.piston, fraction: m.fraction, cell: m.cell.slice() };
-      },
-      // Every module at the current time: id, cell (the one it holds), position, piston.
-      modules: () =>
-        this.frame.modules.map((m) => ({
-          id: m.id,
-          cell: m.cell.slice(),
-          position: m.position.toArray(),
-          piston: m.piston,
-          fraction: m.fraction,
-          moving: m.moving,
-        })),
-      // The motions in flight now, and the strip's counts.
-      motionsInFlight: () => this.frame.motions.map((m) => ({ ...m })),
-      concurrency: () => ({
-        max: this.timeline.motionIndex.max,
-        maxAt: this.timeline.motionIndex.maxAt.map((a) => ({ from: a.from, to: Number.isFinite(a.to) ? a.to : this.duration })),
-        steps: this.timeline.motionIndex.steps,
-        strip: this.strip ? { label: this.strip.label.textContent, width: this.strip.inner.clientWidth } : null,
-        refusals: this.trace.refusals.length,
-      }),
-      targets: () => ({
-        shapes: this.targets.length,
-        shown: this.targetShape,
-        visible: this.targetsToggle.input.checked,
-        cells: this.view.targetFill ? this.view.targetFill.cells : 0,
-        filled: this.view.targetFill ? this.view.targetFill.filled : 0,
-        legend: this.targetLine.hidden ? null : `${this.targetText.textContent} ${this.filledText.textContent}`,
-      }),
-      setTargets: (on) => this.setTargetsVisible(on),
-      // The colourings: which the page has, the one shown, its legend and counts.
-      colouring: () => this.colourings.state(),
-      setColouring: (mode) => this.setColouring(mode),
-      setTargetShape: (k) => this.setTargetShape(k),
-    };
+    return viewerApi(this);
   }
 }

@@ -89,6 +89,10 @@ Result<std::string> checkLoads(const std::string& text, const std::string& name,
 
   // The scene: the trace's header.
   const Json header = headerOf(trace);
+  if (!header.is_object() || !header.contains("modules") || !header["modules"].is_array()) {
+    return Error{
+        fmt::format("{}: the page's trace has no header to check the loads against", name)};
+  }
   std::map<int64_t, std::pair<geometry::Cell, geometry::Vec3>> scene;
   int64_t latchedEnds = 0;
   geometry::Vec3 sum{0, 0, 0};

@@ -148,6 +148,8 @@ try {
       const own = await shoot(weak, 'colours-own-top');
       await weak.evaluate(() => window.datomsimViewer.setColouring('loads'));
       state = await weak.evaluate(() => window.datomsimViewer.colouring());
+      const fragment = await weak.evaluate(() => window.datomsimViewer.fragment());
+      assert(fragment.includes('colours=loads'), `the address ${fragment} names the colouring`);
       const counted = state.latches.byBand.reduce((a, b) => a + b, 0) + state.latches.stale;
       assert(counted === pages.weak.latches, `${counted} latches coloured, the scene has ${pages.weak.latches}`);
       assert(state.latches.stale === 0, 'nothing moved in a scene at rest');

@@ -313,8 +313,7 @@ export class App {
           return;
         case 'c':
         case 'C':
-          this.colourings.next();
-          this.redraw();
+          this.setColouring(this.colourings.modes[(this.colourings.modes.indexOf(this.colourings.mode) + 1) % this.colourings.modes.length]);
           return;
         case 'Escape':
           this.select(-1);
@@ -384,6 +383,7 @@ export class App {
   // Opens at what a URL fragment names; what it does not name stays as it is.
   applyFragment(settings) {
     if (settings.labels !== undefined) this.setLabelsVisible(settings.labels);
+    if (settings.colours !== undefined) this.setColouring(settings.colours);
     if (settings.select !== undefined) this.select(this.timeline.indexOfId.get(settings.select) ?? -1);
     this.fit(settings.view ?? this.viewName);
     if (settings.t !== undefined) this.pauseAndSeek(settings.t);
@@ -401,6 +401,7 @@ export class App {
       labels: this.labelsToggle.input.checked,
       shadows: this.shadows,
       video: this.videoMode,
+      colours: this.colourings.mode,
     });
     if (window.location.hash !== fragment) window.history.replaceState(null, '', fragment);
   }
@@ -577,6 +578,7 @@ export class App {
   setColouring(mode) {
     this.colourings.setMode(mode);
     this.redraw();
+    this.updateFragment();
   }
 
   // What the end-to-end test and the console can drive (api.js).

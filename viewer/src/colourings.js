@@ -96,10 +96,6 @@ export class Colourings {
     this.select.value = this.mode;
   }
 
-  next() {
-    this.setMode(this.modes[(this.modes.indexOf(this.mode) + 1) % this.modes.length]);
-  }
-
   // The centres of the overloaded latches still in force, [x, y, z] each, in loads mode.
   overloadedPoints() {
     if (this.mode !== 'loads') return [];

@@ -203,3 +203,13 @@ describe('latch loads', () => {
     }
   });
 });
+
+describe('the address of a colouring', () => {
+  it('names a colouring other than the modules\' own, and reads it back', async () => {
+    const { formatFragment, parseFragment } = await import('../src/fragment.js');
+    assert.equal(formatFragment({ t: 1, colours: 'loads' }), '#t=1&view=3d&colours=loads');
+    assert.equal(formatFragment({ t: 1 }), '#t=1&view=3d', 'nothing for the own colours');
+    assert.equal(parseFragment('#t=2&colours=energy').colours, 'energy');
+    assert.equal(parseFragment('#colours=heat').colours, undefined, 'an unknown colouring is ignored');
+  });
+});

@@ -11,7 +11,7 @@
 #include <set>
 #include <utility>
 
-#include "common/json_nesting.h"
+#include "export/trace_check.h"
 #include "geometry/lattice.h"
 #include "geometry/vec3.h"
 
@@ -20,8 +20,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-constexpr int kMaxNesting = 32;
-
 bool isInteger(const Json& v) {
   return v.is_number_integer() || (v.is_number_float() && std::isfinite(v.get<double>()) &&
                                    std::trunc(v.get<double>()) == v.get<double>());
@@ -29,22 +27,6 @@ bool isInteger(const Json& v) {
 
 bool isFinite(const Json& v) {
   return v.is_number() && std::isfinite(v.get<double>());
-}
-
-Result<Json> parsed(const std::string& text, const std::string& name) {
-  if (const auto line = lineNestedDeeperThan(text, kMaxNesting)) {
-    return Error{
-        fmt::format("{}:{}: values nested deeper than {} levels", name, *line, kMaxNesting)};
-  }
-  // nlohmann takes a NUL byte for the end of its input, and would accept what precedes it.
-  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
-    return Error{
-        fmt::format("{}:{}: a NUL byte, which no JSON text holds", name,
-                    1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(nul), '\n'))};
-  }
-  Json value = Json::parse(text, nullptr, false);
-  if (value.is_discarded()) return Error{fmt::format("{}: invalid JSON", name)};
-  return value;
 }
 
 // The trace's first line, its header (the trace was checked: a header is one line, as
@@ -65,7 +47,7 @@ double length(const Json& v) {
 
 Result<std::string> checkLoads(const std::string& text, const std::string& name,
                                const std::string& trace) {
-  const auto document = parsed(text, name);
+  const auto document = parseDocument(text, name);
   if (!document) return Error{document.error()};
   const Json& loads = *document;
   const auto notLoads = [&](const std::string& what) {

@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string_view>
 
+#include "common/json_nesting.h"
 #include "world/module_kind.h"
 
 namespace datomsim::exporting {
@@ -287,6 +289,22 @@ std::string changeProblem(const Json& change, const std::set<double>& ids) {
     return "\"motion\" needs an \"end\" time >= its \"t\"";
   }
   return {};
+}
+
+Result<nlohmann::json> parseDocument(const std::string& text, const std::string& name) {
+  constexpr int kMaxNesting = 32;
+  if (const auto line = lineNestedDeeperThan(text, kMaxNesting)) {
+    return Error{
+        fmt::format("{}:{}: values nested deeper than {} levels", name, *line, kMaxNesting)};
+  }
+  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+    return Error{
+        fmt::format("{}:{}: a NUL byte, which no JSON text holds", name,
+                    1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(nul), '\n'))};
+  }
+  nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+  if (value.is_discarded()) return Error{fmt::format("{}: invalid JSON", name)};
+  return value;
 }
 
 }  // namespace datomsim::exporting

@@ -57,4 +57,5 @@ if [[ "${DATOMSIM_SKIP_BROWSER:-0}" != 1 ]]; then
   echo "== viewer: unit tests, then end to end in headless Chromium"
   npm --prefix viewer test
   node viewer/e2e/view.e2e.mjs --datomsim build/release/bin/datomsim --shots build/viewer-shots
+  node viewer/e2e/colours.e2e.mjs --datomsim build/release/bin/datomsim --shots build/viewer-shots
 fi

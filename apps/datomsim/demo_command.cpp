@@ -95,7 +95,8 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
       if (bundle.ok()) {
         const exporting::ViewerPage page = {
             title, result.run.trace,
-            exporting::overlayJson(result.distances.sorted(), result.path, scene::kPaperGoal)};
+            exporting::overlayJson(result.distances.sorted(), result.path, scene::kPaperGoal),
+            std::nullopt};
         files.write(inFolder(name + "-viewer.html"), unwrap(exporting::viewerHtml(*bundle, page)));
         videos.emplace_back(folder / (name + "-run.mp4"), page);
       }
@@ -137,7 +138,8 @@ void addDemoCommand(CLI::App& app, const Reporter& reporter) {
     files.write(inFolder("arch-build-run.json"), frontend::runJson(request.program, built));
     if (bundle.ok()) {
       files.write(inFolder("arch-build-viewer.html"),
-                  unwrap(exporting::viewerHtml(*bundle, {request.description, built.trace, ""})));
+                  unwrap(exporting::viewerHtml(
+                      *bundle, {request.description, built.trace, "", std::nullopt})));
     }
     const double makespan = double(built.statistics.lastMotionEnd) / kSecond;
     const double baseline = double(sequential.statistics.lastMotionEnd) / kSecond;

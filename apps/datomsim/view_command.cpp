@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "export/loads_check.h"
 #include "export/viewer_page.h"
 #include "video/recorder.h"
 
@@ -18,7 +19,7 @@ namespace {
 
 // What both commands take to make the page.
 struct PageArguments {
-  std::string input, reach, viewerJs, title;
+  std::string input, reach, loads, viewerJs, title;
 };
 
 void addPageOptions(CLI::App& command, PageArguments& page) {
@@ -27,6 +28,9 @@ void addPageOptions(CLI::App& command, PageArguments& page) {
       ->required();
   command.add_option("--reach", page.reach,
                      "A distance map and path to show: the JSON of `datomsim reach --out`");
+  command.add_option("--loads", page.loads,
+                     "Latch loads to colour the latches by: the JSON of `datomsim loads --out` "
+                     "for the same scene (a trace's: its start)");
   command.add_option("--title", page.title, "Title of the page (default: the trace's description)");
   command.add_option("--viewer-js", page.viewerJs,
                      "The viewer script to inline (default: viewer.bundle.js next to the binary)");
@@ -37,6 +41,10 @@ exporting::ViewerPage pageOf(const PageArguments& arguments) {
   if (!arguments.reach.empty()) {
     page.overlay = unwrap(
         exporting::checkOverlay(unwrap(exporting::readFile(arguments.reach)), arguments.reach));
+  }
+  if (!arguments.loads.empty()) {
+    page.loads = unwrap(exporting::checkLoads(unwrap(exporting::readFile(arguments.loads)),
+                                              arguments.loads, page.trace));
   }
   if (!arguments.title.empty()) page.title = arguments.title;
   return page;
@@ -59,6 +67,7 @@ std::string outputFor(const std::string& out, const std::string& input,
 std::vector<NamedPath> inputsOf(const PageArguments& page) {
   std::vector<NamedPath> inputs = {{"input", page.input}};
   if (!page.reach.empty()) inputs.push_back({"--reach", page.reach});
+  if (!page.loads.empty()) inputs.push_back({"--loads", page.loads});
   if (!page.viewerJs.empty()) inputs.push_back({"--viewer-js", page.viewerJs});
   return inputs;
 }

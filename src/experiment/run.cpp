@@ -267,6 +267,7 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   sim::SimulationOptions options = request.simulation;
   options.mobile = mobile;
   record::TraceWriter trace(request.simulation.moduleKind);
+  if (request.simulation.actuators) trace.actuators(*request.simulation.actuators);
   if (request.trace) trace.header(world, request.description, request.targets);
   sim::Simulator simulator(std::move(world), table, options);
   if (request.trace) simulator.subscribe(&trace);

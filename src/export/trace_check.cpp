@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string_view>
 
+#include "common/json_nesting.h"
 #include "world/module_kind.h"
 
 namespace datomsim::exporting {
@@ -180,6 +182,18 @@ std::string headerProblem(const Json& header) {
       }
     }
   }
+  // Optional: what the actuators draw (a run with --actuators), for the energy colouring.
+  const Json& actuators = field(header, "actuators");
+  if (!actuators.is_null()) {
+    if (!actuators.is_object()) return "\"actuators\" must be an object";
+    for (const char* key :
+         {"compress_J", "release_J", "latch_J", "unlatch_J", "holding_W", "latch_s", "unlatch_s"}) {
+      const Json& value = field(actuators, key);
+      if (!isFiniteNumber(value) || value.get<double>() < 0) {
+        return fmt::format("\"actuators.{}\" must be a number >= 0, not {}", key, stringify(value));
+      }
+    }
+  }
   return {};
 }
 
@@ -275,6 +289,22 @@ std::string changeProblem(const Json& change, const std::set<double>& ids) {
     return "\"motion\" needs an \"end\" time >= its \"t\"";
   }
   return {};
+}
+
+Result<nlohmann::json> parseDocument(const std::string& text, const std::string& name) {
+  constexpr int kMaxNesting = 32;
+  if (const auto line = lineNestedDeeperThan(text, kMaxNesting)) {
+    return Error{
+        fmt::format("{}:{}: values nested deeper than {} levels", name, *line, kMaxNesting)};
+  }
+  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+    return Error{
+        fmt::format("{}:{}: a NUL byte, which no JSON text holds", name,
+                    1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(nul), '\n'))};
+  }
+  nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+  if (value.is_discarded()) return Error{fmt::format("{}: invalid JSON", name)};
+  return value;
 }
 
 }  // namespace datomsim::exporting

@@ -8,7 +8,14 @@
 #include <set>
 #include <string>
 
+#include "datomsim/result.h"
+
 namespace datomsim::exporting {
+
+// One JSON document a page holds besides the trace (a distance map, latch loads): refused, naming
+// `name` (and the line), when nested deeper than 32 levels, when it holds a NUL byte (nlohmann
+// would take it for the end of the text) or when it is no JSON.
+Result<nlohmann::json> parseDocument(const std::string& text, const std::string& name);
 
 // What is wrong with a trace's header, or an empty string.
 std::string headerProblem(const nlohmann::json& header);

@@ -14,7 +14,6 @@
 #include <vector>
 
 #include "common/atomic_file.h"
-#include "common/json_nesting.h"
 #include "export/trace_check.h"
 #include "io/scene_file.h"
 #include "record/trace_writer.h"
@@ -263,18 +262,9 @@ std::string sceneTrace(const world::World& world, const std::string& description
 }
 
 Result<std::string> checkOverlay(const std::string& text, const std::string& name) {
-  if (const auto line = lineNestedDeeperThan(text, kMaxNesting)) {
-    return Error{
-        fmt::format("{}:{}: values nested deeper than {} levels", name, *line, kMaxNesting)};
-  }
-  // nlohmann takes a NUL byte for the end of its input, and would accept what precedes it.
-  if (const size_t nul = text.find('\0'); nul != std::string::npos) {
-    return Error{
-        fmt::format("{}:{}: a NUL byte, which no JSON text holds", name,
-                    1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(nul), '\n'))};
-  }
-  const Json overlay = Json::parse(text, nullptr, false);
-  if (overlay.is_discarded()) return Error{fmt::format("{}: invalid JSON", name)};
+  const auto parsed = parseDocument(text, name);
+  if (!parsed) return Error{parsed.error()};
+  const Json& overlay = *parsed;
   if (!overlay.is_object()) return Error{fmt::format("{}: a distance map must be an object", name)};
   if (overlay.contains("distances")) {
     const Json& distances = overlay["distances"];
@@ -371,6 +361,11 @@ Result<std::string> viewerHtml(const std::string& bundle, const ViewerPage& page
   if (page.overlay) {
     html += "<script type=\"application/json\" id=\"datomsim-overlay\">";
     html += scriptSafeJson(*page.overlay);
+    html += "</script>\n";
+  }
+  if (page.loads) {
+    html += "<script type=\"application/json\" id=\"datomsim-loads\">";
+    html += scriptSafeJson(*page.loads);
     html += "</script>\n";
   }
   html += "<script>\n";

@@ -32,6 +32,9 @@ struct ViewerPage {
   // A distance map: {"goal":[x,y,z],"distances":[[x,y,z,d],...],"path":[[x,y,z],...]}, every
   // field optional; `datomsim reach --out` writes one.
   std::optional<std::string> overlay;
+  // Latch loads to colour latches by: the document export/loads_check.h makes (id
+  // "datomsim-loads").
+  std::optional<std::string> loads;
 };
 
 // The most bytes read from a file the viewer's page holds (a trace, a reach map, the viewer's

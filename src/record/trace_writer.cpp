@@ -158,6 +158,17 @@ void TraceWriter::header(const world::World& world, const std::string& descripti
     }
     text_ += "]";
   }
+  // Energies in full (shortest round trip): a viewer sums thousands of them.
+  if (actuators_) {
+    const sim::ActuatorModel& a = *actuators_;
+    fmt::format_to(out,
+                   ",\"actuators\":{{\"name\":{},\"compress_J\":{},\"release_J\":{},"
+                   "\"latch_J\":{},\"unlatch_J\":{},\"holding_W\":{},\"latch_s\":{},"
+                   "\"unlatch_s\":{}}}",
+                   quoted(a.name), a.compressEnergy, a.releaseEnergy, a.latchEnergy,
+                   a.unlatchEnergy, a.holdingPower, double(a.latch) / kSecond,
+                   double(a.unlatch) / kSecond);
+  }
   text_ += "}\n";
 }
 

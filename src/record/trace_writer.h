@@ -10,6 +10,7 @@
 // module's model.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "geometry/cell.h"
 #include "geometry/orientation.h"
 #include "geometry/vec3.h"
+#include "sim/actuation.h"
 #include "sim/observer.h"
 #include "world/module_kind.h"
 #include "world/world.h"
@@ -36,6 +38,10 @@ class TraceWriter final : public sim::Observer {
   // scene's target shapes, if any.
   void header(const world::World& world, const std::string& description,
               std::span<const std::vector<geometry::Cell>> targets = {});
+  // The run's actuators, for the header (call before it): what each piston move and latch change
+  // draws, so that a viewer can colour modules by the energy they spent up to any time. A run
+  // without actuators has no "actuators" key: its trace stays the same bytes.
+  void actuators(const sim::ActuatorModel& model) { actuators_ = model; }
   // A free-form marker the viewer shows on its timeline (e.g. "motion 3 starts").
   void note(Time t, const std::string& text);
   // The last line: totals of the run.
@@ -67,6 +73,7 @@ class TraceWriter final : public sim::Observer {
  private:
   datom::Dimensions dimensions_;
   world::ModuleKind kind_ = world::ModuleKind::kDatom;
+  std::optional<sim::ActuatorModel> actuators_;
   std::string text_;
 };
 

@@ -4,25 +4,18 @@
 // timeline.frameAt(t), so the speed, pauses and seeks never change what is shown at a given t.
 import { PART_SCHEMES, PATH_COLOR, TARGET_EMPTY, TARGET_FILLED, distanceLegend, rgbToCss } from './colors.js';
 import { formatSeconds } from './format.js';
+import { viewerApi } from './api.js';
+import { Colourings } from './colourings.js';
 import { formatFragment, parseFragment } from './fragment.js';
 import { Kinematics } from './kinematics.js';
+import { OverloadMarks } from './latch_marks.js';
+import { element, fillPanel } from './panel.js';
 import { ConcurrencyStrip } from './strip.js';
 import { Timeline } from './timeline.js';
 import { CATOM3D, DATOM, nextChangeTime, previousChangeTime } from './trace.js';
 import { View3D } from './view3d.js';
 
 export const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 4, 8, 16, 32];
-
-function element(tag, attributes = {}, children = []) {
-  const node = document.createElement(tag);
-  for (const [key, value] of Object.entries(attributes)) {
-    if (key === 'text') node.textContent = value;
-    else if (key === 'className') node.className = value;
-    else node.setAttribute(key, value);
-  }
-  for (const child of children) node.appendChild(child);
-  return node;
-}
 
 function button(label, title, onClick) {
   const b = element('button', { type: 'button', title, 'aria-label': title });
@@ -59,27 +52,13 @@ function mobileList(motions, limit = 12) {
   return ids.join(', ');
 }
 
-// What a module does in the motions in flight: mobile, pivot, or a blocking module making way.
-export function motionRoles(motions, id) {
-  const roles = [];
-  for (const m of motions) {
-    const to = `(${m.goal.join(', ')}), ${formatTime(m.t)} \u2013 ${formatTime(m.end)}`;
-    if (m.m === id) roles.push(`mobile, about pivot ${m.pivot} to ${to}`);
-    if (m.pivot === id) roles.push(`pivot of ${m.m} (to ${to})`);
-    if (m.blockers.includes(id)) roles.push(`makes way for ${m.m} (to ${to})`);
-  }
-  return roles;
-}
-
-function formatVector(v) {
-  return `(${v.map((x) => Number(x.toFixed(3))).join(', ')})`;
-}
-
 export class App {
-  constructor(root, trace, overlay) {
+  // loads: the page's latch loads document (colouring.js checks it against the trace), or null.
+  constructor(root, trace, overlay, loads = null) {
     this.root = root;
     this.trace = trace;
     this.timeline = new Timeline(trace);
+    this.colourings = new Colourings(trace, this.timeline, loads);
     this.kinematics = new Kinematics(trace.header);
     // A 3D Catom has no pistons: what tells of them (the panel's pistons, the connector colours of
     // the Datom's figures) is left out for Catoms.
@@ -102,6 +81,7 @@ export class App {
     this.buildDom();
     this.view = new View3D(this.canvasHolder, this.timeline, this.kinematics, overlay, { shadows: this.shadows });
     this.view.setOverlayVisible(true);
+    this.marks = new OverloadMarks(this.view.scene, trace.header.spacing, this.colourings.loads?.overloaded ?? 0);
     this.overlayToggle.wrapper.hidden = !overlay;
     if (this.strip) this.strip.draw();
     this.installInput();
@@ -147,6 +127,7 @@ export class App {
           (this.duration > 0 ? `, ${formatTime(this.duration)}` : ', scene (no changes)'),
       }),
       this.distanceLine,
+      this.colourings.legend,
       this.targetLine,
       this.motionLine,
       this.noteLine,
@@ -230,6 +211,7 @@ export class App {
     });
     // A Catom's connectors are always a darker shade of its colour.
     this.schemeSelect.hidden = this.catoms;
+    this.colourings.select.addEventListener('change', () => this.setColouring(this.colourings.select.value));
 
     const disabled = this.duration <= 0;
     const transport = [
@@ -256,6 +238,7 @@ export class App {
         this.latchesToggle.wrapper,
         this.focusToggle.wrapper,
         this.schemeSelect,
+        this.colourings.select,
         button('fit', 'Fit the scene (F)', () => this.fit('3d')),
         button('top', 'Seen from the top, as the paper\'s distance maps (T)', () => this.fit('top')),
       ]),
@@ -266,7 +249,8 @@ export class App {
     this.help = element('div', {
       className: 'dv-help',
       text: 'drag: orbit \u00B7 right-drag: pan \u00B7 wheel: zoom \u00B7 click: module \u00B7 space: play \u00B7 \u2190 \u2192: step \u00B7 F: fit \u00B7 T: top \u00B7 L: labels \u00B7 X: focus' +
-        (this.trace.targets.length ? ' \u00B7 G: target' : ''),
+        (this.trace.targets.length ? ' \u00B7 G: target' : '') +
+        (this.colourings.modes.length > 1 ? ' \u00B7 C: colours' : ''),
     });
     this.root.append(this.canvasHolder, this.top, this.panel, this.help, this.bar);
   }
@@ -326,6 +310,10 @@ export class App {
         case 'g':
         case 'G':
           if (this.targets.length) this.setTargetsVisible(!this.targetsToggle.input.checked);
+          return;
+        case 'c':
+        case 'C':
+          this.setColouring(this.colourings.modes[(this.colourings.modes.indexOf(this.colourings.mode) + 1) % this.colourings.modes.length]);
           return;
         case 'Escape':
           this.select(-1);
@@ -395,6 +383,7 @@ export class App {
   // Opens at what a URL fragment names; what it does not name stays as it is.
   applyFragment(settings) {
     if (settings.labels !== undefined) this.setLabelsVisible(settings.labels);
+    if (settings.colours !== undefined) this.setColouring(settings.colours);
     if (settings.select !== undefined) this.select(this.timeline.indexOfId.get(settings.select) ?? -1);
     this.fit(settings.view ?? this.viewName);
     if (settings.t !== undefined) this.pauseAndSeek(settings.t);
@@ -412,6 +401,7 @@ export class App {
       labels: this.labelsToggle.input.checked,
       shadows: this.shadows,
       video: this.videoMode,
+      colours: this.colourings.mode,
     });
     if (window.location.hash !== fragment) window.history.replaceState(null, '', fragment);
   }
@@ -458,6 +448,9 @@ export class App {
   redraw() {
     const frame = this.timeline.frameAt(this.time);
     this.frame = frame;
+    this.colourings.prepare(frame);
+    this.view.colouring = this.colourings.hook();
+    this.marks.update(this.colourings.overloadedPoints());
     this.view.update(frame);
     this.view.render();
     this.slider.value = String(this.time);
@@ -570,120 +563,26 @@ export class App {
       this.panel.hidden = true;
       return;
     }
-    const m = this.frame.modules[index];
-    const rows = [
-      ['module', String(m.id)],
-      ['cell', m.inTransit ? `${m.cell.join(', ')} (moving)` : m.cell.join(', ')],
-      ['orientation', String(m.o)],
-      ['position', formatVector(m.position.toArray())],
-    ];
-    if (!this.catoms) {
-      rows.push(['piston', m.piston < 0 ? 'all at rest' : `${m.piston} at ${(100 * m.fraction).toFixed(0)} %`]);
-      for (const other of m.otherPistons) {
-        rows.push(['also', `piston ${other.p} at ${(100 * other.fraction).toFixed(0)} %`]);
-      }
-    }
-    for (const role of motionRoles(this.frame.motions, m.id)) rows.push(['motion', role]);
-    const latched = [];
-    for (let c = 0; c < 12; ++c) {
-      if (!(m.latches & (1 << c))) continue;
-      const partner = this.timeline.latchPartner(this.frame, index, c);
-      latched.push(partner ? `${c} \u2192 ${partner.m}:${partner.c}` : String(c));
-    }
-    rows.push(['latches', latched.length ? latched.join(', ') : 'none']);
-    rows.push(['', 'own connector \u2192 module:its connector']);
-    const swatch = element('span', { className: 'dv-swatch' });
-    swatch.style.background = rgbToCss(m.rgb);
-    this.panel.replaceChildren(
-      element('div', { className: 'dv-panel-title' }, [swatch, document.createTextNode(`${this.catoms ? '3D Catom' : 'Datom'} ${m.id}`)]),
-      element(
-        'table',
-        {},
-        rows.map(([key, value]) =>
-          element('tr', {}, [element('th', { text: key }), element('td', { text: value })]),
-        ),
-      ),
-      button('close', 'Deselect (Esc)', () => this.select(-1)),
-    );
+    fillPanel(this.panel, {
+      frame: this.frame,
+      index,
+      catoms: this.catoms,
+      timeline: this.timeline,
+      extraRows: this.colourings.panelRows(this.frame.modules[index]),
+      closeButton: button('close', 'Deselect (Esc)', () => this.select(-1)),
+    });
     this.panel.hidden = false;
   }
 
-  // What the end-to-end test and the console can drive.
+  // The colouring shown: 'own', 'loads' or 'energy' (those the page has).
+  setColouring(mode) {
+    this.colourings.setMode(mode);
+    this.redraw();
+    this.updateFragment();
+  }
+
+  // What the end-to-end test and the console can drive (api.js).
   api() {
-    return {
-      ready: true,
-      duration: this.duration,
-      changeTimes: this.trace.changeTimes,
-      moduleCount: this.trace.header.modules.length,
-      moduleKind: this.moduleKind,
-      // The instanced meshes drawn (their kind and instance count) and, for Catoms, the bodies'
-      // centres as drawn.
-      drawn: () => this.view.drawn(),
-      time: () => this.time,
-      seek: (t) => this.pauseAndSeek(t),
-      step: () => this.step(),
-      stepBack: () => this.stepBack(),
-      play: () => this.play(),
-      pause: () => this.pause(),
-      setSpeed: (s) => {
-        this.speed = s;
-        this.speedSelect.value = String(s);
-      },
-      selectId: (id) => this.select(this.timeline.indexOfId.get(id) ?? -1),
-      selectedInfo: () => (this.panel.hidden ? null : this.panel.innerText),
-      screenPositionOf: (id) => this.view.screenPositionOf(this.timeline.indexOfId.get(id)),
-      setLabels: (on) => this.setLabelsVisible(on),
-      setOverlay: (on) => this.setOverlayVisible(on),
-      setFocus: (on) => this.setFocus(on),
-      setLatches: (on) => {
-        this.latchesToggle.input.checked = on;
-        this.view.showLatches = on;
-        this.redraw();
-      },
-      fit: (view) => this.fit(view === 'front' ? '3d' : view),
-      videoFrame: (t) => this.videoFrame(t),
-      videoTurn: (degrees) => this.videoTurn(degrees),
-      fragment: () => window.location.hash,
-      distanceLegend: () => (this.distanceLine.hidden ? null : this.distanceLine.innerText.replace(/\s+/g, ' ').trim()),
-      camera: (position, target) => {
-        this.view.camera.position.set(...position);
-        this.view.controls.target.set(...target);
-        this.view.controls.update();
-        this.view.render();
-      },
-      modulePose: (id) => {
-        const m = this.frame.modules[this.timeline.indexOfId.get(id)];
-        return { position: m.position.toArray(), piston: m.piston, fraction: m.fraction, cell: m.cell.slice() };
-      },
-      // Every module at the current time: id, cell (the one it holds), position, piston.
-      modules: () =>
-        this.frame.modules.map((m) => ({
-          id: m.id,
-          cell: m.cell.slice(),
-          position: m.position.toArray(),
-          piston: m.piston,
-          fraction: m.fraction,
-          moving: m.moving,
-        })),
-      // The motions in flight now, and the strip's counts.
-      motionsInFlight: () => this.frame.motions.map((m) => ({ ...m })),
-      concurrency: () => ({
-        max: this.timeline.motionIndex.max,
-        maxAt: this.timeline.motionIndex.maxAt.map((a) => ({ from: a.from, to: Number.isFinite(a.to) ? a.to : this.duration })),
-        steps: this.timeline.motionIndex.steps,
-        strip: this.strip ? { label: this.strip.label.textContent, width: this.strip.inner.clientWidth } : null,
-        refusals: this.trace.refusals.length,
-      }),
-      targets: () => ({
-        shapes: this.targets.length,
-        shown: this.targetShape,
-        visible: this.targetsToggle.input.checked,
-        cells: this.view.targetFill ? this.view.targetFill.cells : 0,
-        filled: this.view.targetFill ? this.view.targetFill.filled : 0,
-        legend: this.targetLine.hidden ? null : `${this.targetText.textContent} ${this.filledText.textContent}`,
-      }),
-      setTargets: (on) => this.setTargetsVisible(on),
-      setTargetShape: (k) => this.setTargetShape(k),
-    };
+    return viewerApi(this);
   }
 }

@@ -9,7 +9,10 @@
 //   shadows=on|off   the sun's shadows (on unless off: drawing them takes a software renderer,
 //                    such as the one videos are drawn with, about 1.7 times as long)
 //   video            no controls, no help line
+//   colours=loads|energy  the latches coloured by load, or the modules by energy spent, when the
+//                    page has them (colourings.js)
 export const VIEWS = ['3d', 'top'];
+export const COLOURINGS = ['own', 'loads', 'energy'];
 
 // The settings a fragment names ("#..." or without '#'); unknown or malformed keys are ignored.
 export function parseFragment(hash) {
@@ -30,6 +33,8 @@ export function parseFragment(hash) {
       settings.shadows = value === 'on';
     } else if (key === 'labels' && value === null) {
       settings.labels = true;
+    } else if (key === 'colours' && COLOURINGS.includes(value)) {
+      settings.colours = value;
     } else if (key === 'video' && value === null) {
       settings.video = true;
     }
@@ -39,11 +44,12 @@ export function parseFragment(hash) {
 
 // The fragment of a moment: time to the millisecond, the view, the selected module, labels,
 // shadows when off and video mode when on; "#t=0&view=3d" at the start.
-export function formatFragment({ t = 0, view = '3d', select = null, labels = false, shadows = true, video = false }) {
+export function formatFragment({ t = 0, view = '3d', select = null, labels = false, shadows = true, video = false, colours = 'own' }) {
   const parts = [`t=${Number(t.toFixed(3))}`, `view=${view}`];
   if (select !== null && select !== undefined) parts.push(`select=${select}`);
   if (labels) parts.push('labels');
   if (!shadows) parts.push('shadows=off');
+  if (colours !== 'own') parts.push(`colours=${colours}`);
   if (video) parts.push('video');
   return `#${parts.join('&')}`;
 }

@@ -3,6 +3,7 @@
 // map in <script type="application/json" id="datomsim-overlay">; this script reads them and starts
 // the viewer. A page without a trace offers to open a trace file instead.
 import { App } from './app.js';
+import { LoadsError } from './colouring.js';
 import { STYLE } from './style.js';
 import { TraceError, checkOverlay, parseTrace } from './trace.js';
 
@@ -19,7 +20,7 @@ function showError(root, message) {
   root.appendChild(box);
 }
 
-function start(root, traceText, overlayText) {
+function start(root, traceText, overlayText, loadsText = null) {
   root.replaceChildren();
   try {
     const trace = parseTrace(traceText);
@@ -33,10 +34,24 @@ function start(root, traceText, overlayText) {
       }
       overlay = checkOverlay(parsed, 'distance map') ?? overlay;
     }
-    const app = new App(root, trace, overlay);
+    let loads = null;
+    if (loadsText && loadsText.trim()) {
+      try {
+        loads = JSON.parse(loadsText);
+      } catch (error) {
+        throw new TraceError(`the latch loads are not JSON: ${error.message}`);
+      }
+    }
+    const app = new App(root, trace, overlay, loads);
     window.datomsimViewer = app.api();
   } catch (error) {
-    showError(root, error instanceof TraceError ? `cannot read the trace: ${error.message}` : String(error.stack || error));
+    const message =
+      error instanceof TraceError
+        ? `cannot read the trace: ${error.message}`
+        : error instanceof LoadsError
+          ? `cannot colour the latches by load: ${error.message}`
+          : String(error.stack || error);
+    showError(root, message);
   }
 }
 
@@ -69,7 +84,7 @@ function main() {
     document.body.appendChild(root);
   }
   const traceText = embedded('datomsim-trace');
-  if (traceText && traceText.trim()) start(root, traceText, embedded('datomsim-overlay'));
+  if (traceText && traceText.trim()) start(root, traceText, embedded('datomsim-overlay'), embedded('datomsim-loads'));
   else offerFile(root);
 }
 

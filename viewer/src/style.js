@@ -75,5 +75,11 @@ html, body { margin: 0; height: 100%; overflow: hidden; background: #e9edf2;
 .dv-panel button { font: inherit; border: 1px solid #b9c1cc; background: #fff; border-radius: 4px; cursor: pointer; }
 .dv-error { position: absolute; top: 20px; left: 20px; right: 20px; padding: 12px 16px; background: #fff0f0;
   border: 1px solid #d33; color: #800; border-radius: 6px; white-space: pre-wrap; font-family: monospace; }
+.dv-colour-legend { margin-top: 3px; display: flex; align-items: center; gap: 4px 8px; flex-wrap: wrap; font-size: 12px; }
+.dv-legend-item { display: inline-flex; align-items: center; gap: 3px; }
+.dv-overloaded { font-weight: 700; color: #fff; background: #c80000; padding: 0 5px; border-radius: 3px; }
+.dv-ok { color: #2a6a3a; }
+.dv-energy-bar { display: inline-block; width: 140px; height: 12px; border: 1px solid #333; border-radius: 2px; }
+.dv-energy-total { margin-left: 6px; }
 .dv-open { position: absolute; top: 40%; left: 0; right: 0; text-align: center; font-size: 15px; }
 `;

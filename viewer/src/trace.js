@@ -198,7 +198,25 @@ export function checkHeader(header, line = 1) {
     );
   });
   checkTargets(header.targets, line);
+  checkActuators(header.actuators, line);
   return header;
+}
+
+// What a run's actuators draw (the header's optional "actuators", docs/trace-format.md): each
+// figure a number >= 0, as export/trace_check.cpp says.
+export const ACTUATOR_FIGURES = ['compress_J', 'release_J', 'latch_J', 'unlatch_J', 'holding_W', 'latch_s', 'unlatch_s'];
+
+function checkActuators(actuators, line) {
+  if (actuators === undefined || actuators === null) return;
+  ensure(typeof actuators === 'object' && !Array.isArray(actuators), '"actuators" must be an object', line);
+  for (const key of ACTUATOR_FIGURES) {
+    const value = actuators[key];
+    ensure(
+      isFiniteNumber(value) && value >= 0,
+      `"actuators.${key}" must be a number >= 0, not ${value === undefined ? 'null' : JSON.stringify(value)}`,
+      line,
+    );
+  }
 }
 
 // The kind of the modules of a checked header: its "module", the Datom when it has none.

@@ -50,6 +50,8 @@ export class View3D {
     this.catoms = this.moduleKind === CATOM3D;
     this.scheme = 'paper';
     this.showLatches = false;
+    // Another colouring of the modules and their connectors (colourings.js), or null.
+    this.colouring = null;
     this.selected = -1;
 
     // Renderer, camera (z up, as the lattice) and orbit controls.
@@ -413,6 +415,7 @@ export class View3D {
       const selected = m.index === this.selected;
       // In focus mode only the selected module and the modules deforming or moving stay solid.
       const solid = !this.focus || selected || m.piston >= 0 || m.inTransit;
+      const body = this.colouring ? this.colouring.moduleRgb(m) : m.rgb;
       const [shown, hidden] = solid ? [this.mesh, this.ghostMesh] : [this.ghostMesh, this.mesh];
       for (let i = 0; i < parts; ++i) {
         const part = kin.parts[i];
@@ -423,10 +426,8 @@ export class View3D {
         const instance = m.index * parts + i;
         shown.setMatrixAt(instance, partMatrix);
         hidden.setMatrixAt(instance, this.collapsed);
-        let rgb = partColor(part.kind, m.rgb, this.scheme);
-        if (this.showLatches && part.kind === 'connector' && m.latches & (1 << part.connector)) {
-          rgb = LATCHED_CONNECTOR;
-        }
+        let rgb = partColor(part.kind, body, this.scheme);
+        if (part.kind === 'connector') rgb = this.connectorColor(m, part.connector, rgb);
         if (selected) rgb = mixRgb(rgb, [255, 255, 255], 0.45);
         shown.setColorAt(instance, color.copy(colorOf(rgb)));
       }
@@ -449,15 +450,23 @@ export class View3D {
       const shade = (rgb) => colorOf(selected ? mixRgb(rgb, [255, 255, 255], 0.45) : rgb);
       body.setMatrixAt(m.index, matrices.body);
       ghostBody.setMatrixAt(m.index, this.collapsed);
-      body.setColorAt(m.index, color.copy(shade(catomPartColor('body', m.rgb))));
+      const own = this.colouring ? this.colouring.moduleRgb(m) : m.rgb;
+      body.setColorAt(m.index, color.copy(shade(catomPartColor('body', own))));
       for (let d = 0; d < 12; ++d) {
         const instance = m.index * 12 + d;
         plates.setMatrixAt(instance, matrices.connectors[d]);
         ghostPlates.setMatrixAt(instance, this.collapsed);
-        const latched = this.showLatches && m.latches & (1 << d);
-        plates.setColorAt(instance, color.copy(shade(latched ? LATCHED_CONNECTOR : catomPartColor('connector', m.rgb))));
+        plates.setColorAt(instance, color.copy(shade(this.connectorColor(m, d, catomPartColor('connector', own)))));
       }
     }
+  }
+
+  // A connector's colour: the colouring's (latches by load), else yellow when latched and latches
+  // are shown, else `rgb`.
+  connectorColor(m, connector, rgb) {
+    const coloured = this.colouring?.connectorRgb?.(m, connector);
+    if (coloured) return coloured;
+    return this.showLatches && m.latches & (1 << connector) ? LATCHED_CONNECTOR : rgb;
   }
 
   render() {

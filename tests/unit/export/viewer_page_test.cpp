@@ -57,7 +57,7 @@ std::string elementText(const std::string& html, const std::string& id) {
 }
 
 TEST(ViewerHtml, InlinesTheTraceTheOverlayAndTheViewer) {
-  ViewerPage page{"two & <modules>", smallTrace(), R"({"distances":[[1,2,3,0]]})"};
+  ViewerPage page{"two & <modules>", smallTrace(), R"({"distances":[[1,2,3,0]]})", std::nullopt};
   const auto html = viewerHtml(kBundle, page);
   ASSERT_TRUE(html.ok()) << html.error();
   EXPECT_EQ(html->rfind("<!DOCTYPE html>", 0), 0u);
@@ -75,14 +75,14 @@ TEST(ViewerHtml, InlinesTheTraceTheOverlayAndTheViewer) {
 }
 
 TEST(ViewerHtml, LeavesTheOverlayOutWhenThereIsNone) {
-  const auto html = viewerHtml(kBundle, {"t", smallTrace(), std::nullopt});
+  const auto html = viewerHtml(kBundle, {"t", smallTrace(), std::nullopt, std::nullopt});
   ASSERT_TRUE(html.ok());
   EXPECT_EQ(html->find("datomsim-overlay"), std::string::npos);
 }
 
 TEST(ViewerHtml, RefusesAViewerScriptThatWouldBreakOutOfItsElement) {
   for (const std::string bundle : {"var a = '</SCRIPT>';", "var b = '<!-- x';"}) {
-    const auto html = viewerHtml(bundle, {"t", smallTrace(), std::nullopt});
+    const auto html = viewerHtml(bundle, {"t", smallTrace(), std::nullopt, std::nullopt});
     ASSERT_FALSE(html.ok()) << bundle;
     EXPECT_NE(html.error().find("cannot be inlined"), std::string::npos);
   }
@@ -257,7 +257,7 @@ TEST(PageForFile, RefusesWhatIsNeitherATraceNorAScene) {
 
 TEST(WriteViewerPage, WritesThePageOrNothing) {
   TemporaryDirectory directory;
-  const ViewerPage page{"t", smallTrace(), std::nullopt};
+  const ViewerPage page{"t", smallTrace(), std::nullopt, std::nullopt};
   ASSERT_TRUE(writeViewerPage(directory.path() / "p.html", kBundle, page).ok());
   EXPECT_EQ(testing::readText(directory.path() / "p.html"), *viewerHtml(kBundle, page));
   EXPECT_FALSE(writeViewerPage(directory.path() / "q.html", "</script>", page).ok());

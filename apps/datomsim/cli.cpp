@@ -4,7 +4,10 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <new>
@@ -108,6 +111,9 @@ std::optional<std::string> unknownOption(const CLI::App& app, int argc, char** a
 }  // namespace app
 
 int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
+  // A reader that quits (datomsim ... | head) makes a write fail with EPIPE, which the outputs
+  // report naming themselves, rather than a signal that kills the process without a word.
+  std::signal(SIGPIPE, SIG_IGN);
   if (const Status names = algorithms::checkAdded(programs); !names.ok()) {
     fmt::print(stderr, "datomsim: error: {}\n", names.error());
     return 1;
@@ -178,6 +184,12 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
     // A researcher's program that throws (a parameter it did not declare, say) ends the run
     // with its message rather than an abort.
     fmt::print(stderr, "datomsim: error: {}\n", error.what());
+    return 1;
+  }
+  // What a subcommand printed itself (a table, an info line) reached its reader, or says why not.
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+    fmt::print(stderr, "datomsim: error: cannot write to standard output: {}\n",
+               std::strerror(errno));
     return 1;
   }
   return 0;

@@ -7,7 +7,7 @@
 
 #include "arguments.h"
 #include "commands.h"
-#include "common/available_memory.h"
+#include "frontend/generation_memory.h"
 #include "geometry/lattice.h"
 #include "io/scene_file.h"
 #include "scene/box.h"
@@ -18,27 +18,6 @@
 
 namespace datomsim::app {
 namespace {
-
-// What a generated world of `modules` takes at its peak, measured with `generate box` (29 bytes
-// a module over 2 and 4 million, on top of some 100 MB for the binary and its buffers), with a
-// margin: the world and its index as they grow.
-constexpr uint64_t kGeneratedBytesPerModule = 40;
-constexpr uint64_t kGeneratedBaseBytes = uint64_t{200} << 20;
-
-// Refuses, before anything is allocated, a request the machine cannot hold: it would otherwise
-// be killed half-way, or swap for minutes.
-void refuseBeyondMemory(int64_t modules, const std::string& what) {
-  const std::optional<uint64_t> available = availableMemoryBytes();
-  // Beyond the module limit, the generator's own refusal says more.
-  if (!available || modules <= 0 || modules > int64_t(world::kMaxModules)) return;
-  const uint64_t needed = kGeneratedBaseBytes + uint64_t(modules) * kGeneratedBytesPerModule;
-  if (needed > *available) {
-    throw UsageError(fmt::format(
-        "{} is {} modules, about {:.1f} GB to generate; this process may take {:.1f} GB "
-        "(the memory available, or ulimit -v)",
-        what, modules, double(needed) / 1e9, double(*available) / 1e9));
-  }
-}
 
 // The options every subcommand of `generate` shares: the output, and the targets to attach.
 struct GenerateArguments {
@@ -158,7 +137,8 @@ void addGenerate(CLI::App& app, const Reporter& reporter) {
     options.origin = parseCell("--origin", box->origin);
     if (!box->grid.empty()) options.gridSize = parseCell("--grid", box->grid);
     const geometry::Cell size = parseCell("--size", box->size);
-    refuseBeyondMemory(int64_t{size.x} * size.y * size.z, "a box of " + box->size);
+    frontend::refuseBeyondMemory(int64_t{size.x} * size.y * size.z, "a box of " + box->size + " is",
+                                 frontend::kBoxBytesPerModule);
     auto world = scene::box(size, options);
     if (!world.ok() && options.gridSize && !options.upright && size.z > 1) {
       // A box of several layers leans in the skew coordinates, by floor(z/2) cells on layer z:
@@ -220,6 +200,9 @@ void addGenerate(CLI::App& app, const Reporter& reporter) {
     options.maxHeight = random->height;
     options.randomOrientations = random->orientations;
     const uint64_t seed = parseSeed("--seed", random->seed);
+    frontend::refuseBeyondMemory(int64_t(std::min<size_t>(random->count, INT64_MAX)),
+                                 fmt::format("a random scene of --count {} is", random->count),
+                                 frontend::kRandomBytesPerModule);
     world::World world = unwrap(scene::random(seed, random->count, options));
     if (!options.gridSize) {
       // Grown from 0,0,0 every way; moved so that its grid coordinates start at 0, as a grid

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "algorithms/programs_by_slot.h"
+#include "geometry/cell_text.h"
 #include "geometry/lattice.h"
 
 namespace datomsim::algorithms {
@@ -158,8 +159,12 @@ std::string FollowGradientProgram::describeWait() const {
       return "it was never started";
     case Phase::kAsking:
       return fmt::format("{} it waits for {} DistanceReply", at, walk_->waitingReplies);
-    case Phase::kDeforming:
-      return fmt::format("{} it waits for {} AckDeform", at, walk_->helpers.waiting());
+    case Phase::kDeforming: {
+      const std::vector<Cell> helpers = walk_->helpers.unanswered();
+      return fmt::format("{} it waits for {} AckDeform, from the helper{} at {}", at,
+                         walk_->helpers.waiting(), helpers.size() == 1 ? "" : "s",
+                         geometry::cellsInWords(helpers, "and"));
+    }
     case Phase::kMoving:
       return fmt::format("{} its motion never ended", at);
     case Phase::kReleasing:
@@ -168,6 +173,11 @@ std::string FollowGradientProgram::describeWait() const {
       return fmt::format("{} it stopped", at);
   }
   return at;
+}
+
+std::vector<Cell> FollowGradientProgram::awaitedHelpers() const {
+  if (phase() != Phase::kDeforming) return {};
+  return walk_->helpers.unanswered();
 }
 
 void FollowGradientProgram::fail(const std::string& why) {
@@ -195,6 +205,14 @@ class FollowGradientPrograms final : public ProgramsBySlot<FollowGradientProgram
                          mobile->describeWait());
     }
     return std::nullopt;
+  }
+
+  // A mobile that stopped waiting for its helpers: their cells, for the run to say whether their
+  // answers could still arrive.
+  AwaitedAnswers awaitedAnswers() const override {
+    const FollowGradientProgram* mobile = this->mobile();
+    if (!mobile || mobile->failure() || mobile->arrived()) return {};
+    return {parameters_.mobile, mobile->awaitedHelpers()};
   }
 
   // The mobile's cells from the start to where it stopped, and whether it reached the goal.

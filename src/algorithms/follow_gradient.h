@@ -55,6 +55,8 @@ class FollowGradientProgram : public GradientProgram {
   bool arrived() const { return walk_ && walk_->arrived; }
   // What the mobile is doing or waiting for, for a run that ends before it arrives.
   std::string describeWait() const;
+  // The cells of the helpers whose AckDeform the mobile still waits for.
+  std::vector<geometry::Cell> awaitedHelpers() const;
 
  private:
   // The mobile's side.

@@ -119,6 +119,8 @@ Status HelperDuty::onDeformationDone(Context& context, Router& router, bool busy
     answer.target = waitingForPiston_.front().origin;
     answer.origin = context.cell();
     answer.request = waitingForPiston_.front().request;
+    // One motion at a time: its answer may go round as far as its hops allow (routing.h).
+    answer.hopsLeft = kAroundAPiston;
     waitingForPiston_.clear();
     if (releasing_) return router.send(context, AckRelease{answer});
     return router.send(context, AckDeform{answer});

@@ -88,6 +88,14 @@ class MotionHelpers {
 
   // How many helpers were asked, and how many answers are still awaited.
   int size() const { return int(asked_.size()); }
+  // The cells of the helpers asked whose answer has not come, in the order asked.
+  std::vector<geometry::Cell> unanswered() const {
+    std::vector<geometry::Cell> cells;
+    for (const Asked& helper : asked_) {
+      if (!helper.answered) cells.push_back(helper.cell);
+    }
+    return cells;
+  }
   int waiting() const { return waiting_; }
   void stopWaiting() { waiting_ = 0; }
   void clear() {

@@ -81,6 +81,12 @@ struct ModuleState {
   std::string state;
 };
 
+// Answers a module still waits for when the run ends: from the modules in these cells.
+struct AwaitedAnswers {
+  ModuleId waiting;
+  std::vector<geometry::Cell> from;
+};
+
 // The programs of one run: makes each module's program, keeps it, and reads the results after the
 // run through the programs' own types. The simulator borrows the programs (Simulator::install):
 // the set must outlive it.
@@ -94,6 +100,9 @@ class ProgramSet : public program::ProgramSource {
   // The modules whose program is still at work, by increasing id, and what each is doing: a run
   // watched to its end names them when it stalls.
   virtual std::vector<ModuleState> unfinished() const { return {}; }
+  // After a failure: the answers a module still waits for, so that the run can say whether any
+  // latched path could still bring them (messages travel only through latches).
+  virtual AwaitedAnswers awaitedAnswers() const { return {}; }
 };
 
 struct ProgramKind {

@@ -6,7 +6,11 @@
 // (typically: a helper has just retracted the connector that faced the mobile), it
 // floods to its latched neighbours, each module forwarding a given message once, within a hop
 // limit and within a ball around the target one cell wider than where greedy stalled: the detour
-// is local, and a flood that roamed the whole ensemble would cost a message per latch.
+// is local, and a flood that roamed the whole ensemble would cost a message per latch. A message
+// marked kAroundAPiston (a helper's answer on the paper's terms, one motion at a time) floods in a
+// ball two cells wider: the way round the helper's own compressed piston goes through its
+// remaining neighbours, up to a cell farther from the target than the helper, and theirs, up to
+// one more.
 // Delivery happens at the module in the target cell; a flood can bring it several copies, of
 // which the target handles the first (Router::firstCopy).
 #pragma once
@@ -36,6 +40,9 @@ struct RoutedMsg {
 // A routed message that never floods: cheap, for information that may be lost (a distance some
 // other module will also tell).
 inline constexpr int8_t kGreedyOnly = -1;
+// A routed message whose flood, where greedy routing stalls, keeps within a ball two cells wider
+// than where it stalled, not one: a helper's answer that must go round its own compressed piston.
+inline constexpr int8_t kAroundAPiston = -2;
 
 class Router {
  public:

@@ -15,11 +15,12 @@ inline int64_t squaredDistance4(const geometry::Cell& a, const geometry::Cell& b
   return (2 * dx + dz) * (2 * dx + dz) + (2 * dy + dz) * (2 * dy + dz) + 2 * dz * dz;
 }
 
-// The flood's ball: one cell (squaredDistance4 = 4) wider in radius than `stalledAt`.
-inline uint16_t floodBoundAround(int64_t stalledAt) {
+// The flood's ball: `cellsWider` cells (squaredDistance4 = 4 a cell) wider in radius than
+// `stalledAt`.
+inline uint16_t floodBoundAround(int64_t stalledAt, int64_t cellsWider) {
   int64_t radius = 0;  // twice the world distance, rounded up
   while (radius * radius < stalledAt) ++radius;
-  const int64_t bound = (radius + 2) * (radius + 2);
+  const int64_t bound = (radius + 2 * cellsWider) * (radius + 2 * cellsWider);
   return uint16_t(std::min<int64_t>(bound, std::numeric_limits<uint16_t>::max()));
 }
 
@@ -65,7 +66,7 @@ Status Router::forward(Context& context, const RoutedMsg& routed, uint64_t kind,
   // ball around the target.
   RoutedMsg next = routed;
   if (!next.flooding()) {
-    next.floodBound = floodBoundAround(own);
+    next.floodBound = floodBoundAround(own, routed.hopsLeft == kAroundAPiston ? 2 : 1);
     next.hopsLeft = kFloodHops;
   }
   if (routed.flooding() && seen(routed, kind)) return Ok{};

@@ -73,6 +73,62 @@ Status checkCellParameters(const world::World& world, const ProgramEntry& entry,
   return Ok{};
 }
 
+// Which of `cells` no latched path joins to the module `from` in a world at rest: a breadth-first
+// search of its piece through latched connectors.
+std::vector<Cell> cutOffFrom(const world::World& world, ModuleId from,
+                             const std::vector<Cell>& cells) {
+  const auto start = world.indexOf(from);
+  if (!start) return cells;
+  std::vector<bool> reached(world.size(), false);
+  std::vector<uint32_t> queue{*start};
+  reached[*start] = true;
+  for (size_t next = 0; next < queue.size(); ++next) {
+    const world::Module& module = world.modules()[queue[next]];
+    for (int d = 0; d < geometry::kDirectionCount; ++d) {
+      const world::Module* neighbour = world.neighbour(module, d);
+      if (!neighbour || !world.isLatched(module, d)) continue;
+      const uint32_t index = *world.indexOf(neighbour->id);
+      if (!reached[index]) {
+        reached[index] = true;
+        queue.push_back(index);
+      }
+    }
+  }
+  std::vector<Cell> cut;
+  for (const Cell& cell : cells) {
+    const world::Module* there = world.moduleAt(cell);
+    if (!there || !reached[*world.indexOf(there->id)]) cut.push_back(cell);
+  }
+  return cut;
+}
+
+// What the run can add to a failure in which a module waits for answers: whether a latched path
+// still joins it to each module it waits for. Without one, no message can bring the answer.
+std::string whyAnswersMissing(const world::World& world,
+                              const algorithms::AwaitedAnswers& awaited) {
+  if (awaited.from.empty()) return {};
+  const std::vector<Cell> cut = cutOffFrom(world, awaited.waiting, awaited.from);
+  std::vector<Cell> joined;
+  for (const Cell& cell : awaited.from) {
+    if (std::find(cut.begin(), cut.end(), cell) == cut.end()) joined.push_back(cell);
+  }
+  std::string why;
+  if (!cut.empty()) {
+    why += fmt::format(
+        "; no latched path joins the mobile to {} any more (a compressed piston let go of the "
+        "last latch between them): messages travel only through latches, so {} cannot arrive",
+        geometry::cellsInWords(cut, "or"), cut.size() == 1 ? "that answer" : "those answers");
+  }
+  if (!joined.empty()) {
+    why += fmt::format(
+        "; a latched path joins the mobile to {}: {} lost on its way (a route that detours is "
+        "bounded, docs/simulation.md, \"Helpers\")",
+        geometry::cellsInWords(joined, "and"),
+        joined.size() == 1 ? "that answer was" : "those answers were");
+  }
+  return why;
+}
+
 // The ended run, kept for as long as the program's sections read it.
 struct EndedRun {
   std::shared_ptr<const algorithms::ProgramSet> programs;
@@ -303,6 +359,8 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
   // The program reads its results on the ended world, which its sections may keep.
   const auto ended =
       std::make_shared<const EndedRun>(EndedRun{programs, std::move(simulator).ended()});
+  if (result.failure)
+    *result.failure += whyAnswersMissing(ended->world, programs->awaitedAnswers());
   programs->report({modulesAtEnd(ended->world), result.stoppedAtLimit, ended}, result.report);
   std::vector<std::string_view> keys;
   for (const algorithms::RunReport::Section& section : result.report.sections()) {

@@ -352,7 +352,7 @@ void CommandFiles::commit(const Reporter& reporter) {
     if (output->kind == Output::Kind::kStandardOutput) {
       if (std::fwrite(output->held.data(), 1, output->held.size(), stdout) != output->held.size() ||
           std::fflush(stdout) != 0) {
-        throw UsageError("cannot write to standard output");
+        throw UsageError(fmt::format("cannot write to standard output: {}", systemError()));
       }
       continue;
     }

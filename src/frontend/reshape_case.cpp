@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "frontend/arguments.h"
+#include "frontend/generation_memory.h"
 #include "frontend/usage_error.h"
 #include "scene/reshape.h"
 #include "target/target.h"
@@ -47,6 +48,8 @@ io::Scene heapToCylinder(int floorX, int floorY) {
 
 io::Scene reshapeCase(const ReshapeArguments& args) {
   const std::string& kase = args.kase;
+  refuseBeyondMemory(reshapeModulesAbout(args), "the reshape case " + kase + " is about",
+                     kReshapeBytesPerModule);
   auto floorSize = [&] {
     const geometry::Cell size = parseCell("--floor", args.floor + ",1");
     return std::pair{size.x, size.y};

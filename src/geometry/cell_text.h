@@ -51,4 +51,19 @@ inline std::string cellList(std::span<const Cell> cells, size_t named = 12) {
   return text;
 }
 
+// Cells as words: "1,1,1", "1,1,1 and 1,0,1", "1,1,1, 1,0,1 and 2,0,1" (`last`: "and" or "or").
+inline std::string cellsInWords(std::span<const Cell> cells, std::string_view last) {
+  std::string text;
+  for (size_t i = 0; i < cells.size(); ++i) {
+    if (i > 0 && i + 1 < cells.size()) text += ", ";
+    if (i > 0 && i + 1 == cells.size()) {
+      text += ' ';
+      text.append(last);
+      text += ' ';
+    }
+    text += toString(cells[i]);
+  }
+  return text;
+}
+
 }  // namespace datomsim::geometry

@@ -129,7 +129,18 @@ Result<Scene> SceneHandler::finish() {
   // A grid target's cell no module may hold could never be filled: refused as a module's would
   // be (the grid may come after the targets in the file, so they are checked here).
   for (size_t t = 0; t < scene_.targets.size(); ++t) {
-    const std::vector<target::GridCell>& cells = scene_.targets[t].gridCells();
+    const target::Target& target = scene_.targets[t];
+    if (target.format() == target::Format::kCsg) {
+      if (const auto cell = target.firstCellNoModuleMayHold()) {
+        return failure(fmt::format("targets[{}]", t),
+                       fmt::format("the CSG shape {} holds cell {}, which {}: no module could "
+                                   "fill it",
+                                   brief(Json(target.csgContent())), geometry::toString(*cell),
+                                   world::Bounds{}.whyOutside(*cell)));
+      }
+      continue;
+    }
+    const std::vector<target::GridCell>& cells = target.gridCells();
     for (size_t i = 0; i < cells.size(); ++i) {
       if (const std::string outside = world.bounds().whyOutside(cells[i].cell); !outside.empty()) {
         return failure(fmt::format("targets[{}].cells[{}]", t, i),

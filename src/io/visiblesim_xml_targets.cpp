@@ -125,6 +125,13 @@ class TargetReader {
       return attributeError(source_, csg, "content", brief(content).c_str(),
                             "does not parse: " + target.error());
     }
+    // A cell no module may hold in any world could never be filled: refused as a grid target's.
+    if (const auto cell = target->firstCellNoModuleMayHold()) {
+      return attributeError(
+          source_, csg, "content", brief(content).c_str(),
+          fmt::format("holds cell {}, which {}: no module could fill it", geometry::toString(*cell),
+                      world::Bounds{}.whyOutside(*cell)));
+    }
     return target;
   }
 

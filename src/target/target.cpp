@@ -121,13 +121,13 @@ Result<size_t> Target::count() const {
   return count;
 }
 
-Status Target::scanCsgCells(const std::function<void(const Cell&)>& visit) const {
+Result<Target::CandidateBox> Target::csgCandidates() const {
   // The shape lies in its box; the candidates are the cells whose centres lie in the box too.
   const csg::Box box = csg::boundingBox(csgShape_);
   if (!isFinite(box.low) || !isFinite(box.high) || !isFinite(csgShift_)) {
     return Error{"the CSG shape's bounding box is unbounded (a number overflows)"};
   }
-  if (box.empty()) return Ok{};
+  if (box.empty()) return CandidateBox{0, -1, {}, {}};
   const Vec3 low = box.low - csgShift_;
   const Vec3 high = box.high - csgShift_;
 
@@ -156,10 +156,15 @@ Status Target::scanCsgCells(const std::function<void(const Cell&)>& visit) const
       return Error{fmt::format("the CSG shape lies outside the 32-bit cell range (at {:g})", v)};
     }
   }
+  return CandidateBox{int64_t(zLow), int64_t(zHigh), low, high};
+}
 
-  for (auto z = int64_t(zLow); z <= int64_t(zHigh); ++z) {
-    const auto [yLow, yHigh] = columnsAlong(low.y, high.y, z);
-    const auto [xLow, xHigh] = columnsAlong(low.x, high.x, z);
+Status Target::scanCsgCells(const std::function<void(const Cell&)>& visit) const {
+  const Result<CandidateBox> box = csgCandidates();
+  if (!box) return Error{box.error()};
+  for (int64_t z = box->zLow; z <= box->zHigh; ++z) {
+    const auto [yLow, yHigh] = columnsAlong(box->low.y, box->high.y, z);
+    const auto [xLow, xHigh] = columnsAlong(box->low.x, box->high.x, z);
     for (int64_t y = yLow; y <= yHigh; ++y) {
       for (int64_t x = xLow; x <= xHigh; ++x) {
         const Cell cell{int32_t(x), int32_t(y), int32_t(z)};
@@ -168,6 +173,39 @@ Status Target::scanCsgCells(const std::function<void(const Cell&)>& visit) const
     }
   }
   return Ok{};
+}
+
+std::optional<Cell> Target::firstCellNoModuleMayHold() const {
+  const world::Bounds bounds;  // the ground and the coordinate range, no grid
+  const auto inside = [&](int64_t x, int64_t y, int64_t z) {
+    return bounds.whyOutside(Cell{int32_t(x), int32_t(y), int32_t(z)}).empty();
+  };
+  if (format_ == Format::kGrid) {
+    for (const GridCell& cell : gridCells_) {
+      if (!bounds.whyOutside(cell.cell).empty()) return cell.cell;
+    }
+    return std::nullopt;
+  }
+  const Result<CandidateBox> box = csgCandidates();
+  if (!box) return std::nullopt;
+  // The bounds are a box of cells: a row whose two ends are inside is inside, and so is a layer
+  // whose four corners are.
+  for (int64_t z = box->zLow; z <= box->zHigh; ++z) {
+    const auto [yLow, yHigh] = columnsAlong(box->low.y, box->high.y, z);
+    const auto [xLow, xHigh] = columnsAlong(box->low.x, box->high.x, z);
+    if (inside(xLow, yLow, z) && inside(xHigh, yLow, z) && inside(xLow, yHigh, z) &&
+        inside(xHigh, yHigh, z)) {
+      continue;
+    }
+    for (int64_t y = yLow; y <= yHigh; ++y) {
+      if (inside(xLow, y, z) && inside(xHigh, y, z)) continue;
+      for (int64_t x = xLow; x <= xHigh; ++x) {
+        const Cell cell{int32_t(x), int32_t(y), int32_t(z)};
+        if (!inside(x, y, z) && csg::contains(csgShape_, csgPoint(cell))) return cell;
+      }
+    }
+  }
+  return std::nullopt;
 }
 
 size_t Target::filledIn(const world::World& world) const {

@@ -106,6 +106,14 @@ class Target {
   // The number of cells(), with the same refusals, counted without holding the list.
   Result<size_t> count() const;
 
+  // The first of the target's cells that no module may hold in any world (below the ground, or
+  // beyond the coordinate range), in the order of cells(), or nullopt. A grid, which may clip a
+  // shape at its edges as VisibleSim's own examples do, is not asked. A CSG target is scanned only
+  // where its candidate cells leave those bounds (its margin layer under the ground, say), so
+  // that checking costs little more than the box's rows; one that cells() would refuse is not
+  // looked at (listing it refuses it).
+  std::optional<geometry::Cell> firstCellNoModuleMayHold() const;
+
   // How many of the target's cells hold a module of the world. Never refuses: it asks each
   // module's cell, not each of the target's cells.
   size_t filledIn(const world::World& world) const;
@@ -118,6 +126,14 @@ class Target {
 
   // Calls `visit` for each cell of a CSG target, in the order of cells(), after the refusals.
   Status scanCsgCells(const std::function<void(const geometry::Cell&)>& visit) const;
+
+  // The candidate cells of a CSG target: layers zLow..zHigh, and in each the columns and rows
+  // whose centres may lie in [low, high] (lattice frame). Refused as cells() refuses.
+  struct CandidateBox {
+    int64_t zLow, zHigh;
+    geometry::Vec3 low, high;
+  };
+  Result<CandidateBox> csgCandidates() const;
 
   Format format_ = Format::kGrid;
   std::optional<Color> color_;

@@ -141,6 +141,34 @@ TEST_F(BadInput, ABoxBeyondTheMemoryAvailableIsRefusedUpFront) {
 #endif
 }
 
+// The same for the other generators that can be asked for scenes of millions of modules.
+TEST_F(BadInput, OtherGeneratorsBeyondTheMemoryAvailableAreRefusedUpFront) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than ulimit -v allows";
+#else
+  const std::vector<std::pair<std::string, std::string> > cases = {
+      {"random --count 100000000",
+       "a random scene of --count 100000000 is 100000000 modules, about 10.2 GB to generate"},
+      {"reshape random --floor 10000,10000 --modules 100",
+       "the reshape case random is about 100000100 modules"},
+      {"reshape line --length 10000000", "the reshape case line is about 90000032 modules"},
+      {"reshape cube --side 4000", "the reshape case cube is about 141000000 modules"},
+      {"reshape pyramid --side 4000", "the reshape case pyramid is about 57791750 modules"},
+      {"reshape heap --floor 10000,10000", "the reshape case heap is about 133333333 modules"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const Outcome outcome = shell("ulimit -v 1000000 && " + std::string(DATOMSIM_BINARY) +
+                                  " generate " + arguments + " -o " + path("big.json"));
+    EXPECT_EQ(outcome.status, 1) << arguments << ": " << outcome.output;
+    EXPECT_NE(outcome.output.find(message), std::string::npos)
+        << arguments << ": " << outcome.output;
+    EXPECT_NE(outcome.output.find("this process may take 1.0 GB"), std::string::npos)
+        << arguments << ": " << outcome.output;
+    EXPECT_FALSE(std::filesystem::exists(path("big.json")));
+  }
+#endif
+}
+
 TEST_F(BadInput, CoordinatesOutsideTheSupportedRangeAreRefusedAtEveryEntry) {
   refused("generate box --size 3,1,1 --origin 2147483646,0,0 -o " + path("e.json"),
           "--origin \"2147483646,0,0\": 2147483646 is outside the supported coordinate range, "

@@ -262,5 +262,30 @@ TEST_F(Outputs, ViewRefusesAnInputLargerThanItsBoundWithoutReadingIt) {
   EXPECT_NE(outcome.output.find("more than the 512 MiB"), std::string::npos) << outcome.output;
 }
 
+// A reader that quits mid-write (head -c 10) ends the command with a message naming the output and
+// status 1, not with SIGPIPE (status 141 through the shell); through a pipe and through a FIFO.
+TEST_F(Outputs, AReaderThatQuitsMidWriteIsAnErrorNamingTheOutput) {
+  const std::string binary = DATOMSIM_BINARY;
+  const auto read = [&](const std::string& name) {
+    std::ifstream in(path(name));
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  ASSERT_EQ(shell(binary + " -q generate box --size 80,80,1 -o " + path("b.json")).status, 0);
+  // The map is 84 kB, more than a pipe holds: the writer meets the closed end.
+  shell("{ " + binary + " reach " + path("b.json") + " --goal 0,0,1 2>" + path("errors") +
+        "; echo $? >" + path("status") + "; } | head -c 10");
+  EXPECT_EQ(read("status"), "1\n");
+  EXPECT_NE(read("errors").find("cannot write to standard output"), std::string::npos)
+      << read("errors");
+
+  ASSERT_EQ(::mkfifo(path("fifo").c_str(), 0600), 0);
+  const Outcome outcome =
+      shell("(head -c 10 " + path("fifo") + " >/dev/null &) && sleep 0.2 && " + binary + " reach " +
+            path("b.json") + " --goal 0,0,1 --out " + path("fifo"));
+  EXPECT_EQ(outcome.status, 1) << outcome.output;
+  EXPECT_NE(outcome.output.find("cannot write " + path("fifo")), std::string::npos)
+      << outcome.output;
+}
+
 }  // namespace
 }  // namespace datomsim

@@ -27,7 +27,7 @@ Scene sceneWithTargets() {
   scene.targets.push_back(target::Target::grid(plain).value());
   target::CsgPlacement placement;
   placement.boundingBox = false;
-  placement.translate = Vec3{1.5, 0, -2};
+  placement.translate = Vec3{1.5, 0, 2};
   scene.targets.push_back(target::Target::csg("sphere(2); ", placement).value());
   return scene;
 }
@@ -63,7 +63,7 @@ TEST(JsonSceneTargets, WritesGridCellsOnePerLineAndACsgTargetOnOne) {
     {"format":"grid","cells":[
       [0,0,0]
     ]},
-    {"format":"csg","content":"sphere(2); ","boundingBox":false,"translate":[1.5,0,-2]}
+    {"format":"csg","content":"sphere(2); ","boundingBox":false,"translate":[1.5,0,2]}
   ]
 }
 )");
@@ -74,7 +74,7 @@ TEST(JsonSceneTargets, ReadsTheWrittenTargetsBack) {
   const auto back = parseJsonScene(toJson(scene), "targets.json");
   ASSERT_TRUE(back.ok()) << back.error();
   EXPECT_TRUE(sameScene(scene, *back));
-  EXPECT_EQ(back->targets[2].csgPlacement().translate, (Vec3{1.5, 0, -2}));
+  EXPECT_EQ(back->targets[2].csgPlacement().translate, (Vec3{1.5, 0, 2}));
   EXPECT_FALSE(back->targets[2].csgPlacement().offset);
 }
 
@@ -132,6 +132,29 @@ TEST(JsonSceneTargets, RefusesGridCellsBelowTheGroundBeyondTheRangeOrOutsideTheG
                     R"({"format":"grid","cells":[[1,1,0]]},{"format":"grid","cells":[[12,1,0]]}],)"
                     R"("grid":[11,11,11]})"),
             "box.json: targets[1].cells[0]: cell 12,1,0 is outside the grid 11,11,11");
+}
+
+// The same for a CSG target's cells below the ground or beyond the range, found where its shape's
+// box leaves them, and named with the shape.
+TEST(JsonSceneTargets, RefusesCsgCellsBelowTheGroundOrBeyondTheRange) {
+  EXPECT_EQ(errorOf(withTargets(R"({"format":"csg","content":"sphere(2);","boundingBox":false})")),
+            "box.json: targets[0]: the CSG shape \"sphere(2);\" holds cell 1,1,-3, which is "
+            "below the ground (z < 0): no module could fill it");
+  EXPECT_EQ(errorOf(withTargets(R"({"format":"csg","content":"sphere(1);","boundingBox":false,)"
+                                R"("translate":[-5000000,0,3]})")),
+            "box.json: targets[0]: the CSG shape \"sphere(1);\" holds cell -5000002,-2,3, which "
+            "is outside the supported coordinate range (-1048576 to 1048575): no module could "
+            "fill it");
+  // A grid clips a shape (VisibleSim's own examples touch its edges): what lies beyond is left.
+  const auto clipped = parseJsonScene(R"({"format":"datomsim-scene","version":1,"modules":[],)"
+                                      R"("targets":[{"format":"csg","content":"cube([30,2,2]);"}],)"
+                                      R"("grid":[11,11,11]})",
+                                      "box.json");
+  EXPECT_TRUE(clipped.ok()) << clipped.error();
+  // Within the bounds, nothing is refused (the ground's layer of candidates is looked at only).
+  const auto scene =
+      parseJsonScene(withTargets(R"({"format":"csg","content":"cube([4,4,2]);"})"), "box.json");
+  EXPECT_TRUE(scene.ok()) << scene.error();
 }
 
 TEST(JsonSceneTargets, RefusesBadCsgTargets) {

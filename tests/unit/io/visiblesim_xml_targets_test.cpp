@@ -165,6 +165,25 @@ TEST(VisibleSimXmlTargets, RefusesGridCellsBelowTheGroundBeyondTheRangeOrOutside
             "scene.xml:9: cell position \"11,1,0\" is outside the grid 11,11,11");
 }
 
+// The same for a CSG target's cells below the ground or beyond the range, named with the shape
+// and its line.
+TEST(VisibleSimXmlTargets, RefusesCsgCellsBelowTheGroundOrBeyondTheRange) {
+  const auto withCsg = [](const std::string& attributes) {
+    return xmlWithTargets("<target format=\"csg\">\n<csg " + attributes + "/>\n</target>\n");
+  };
+  EXPECT_EQ(errorOf(withCsg("content=\"sphere(2);\" boundingBox=\"false\"")),
+            "scene.xml:8: csg content \"sphere(2);\" holds cell 1,1,-3, which is below the "
+            "ground (z < 0): no module could fill it");
+  EXPECT_EQ(errorOf(withCsg("content=\"sphere(1);\" boundingBox=\"false\" "
+                            "translate=\"-5000000,0,3\"")),
+            "scene.xml:8: csg content \"sphere(1);\" holds cell -5000002,-2,3, which is outside "
+            "the supported coordinate range (-1048576 to 1048575): no module could fill it");
+  // Beyond the grid 11,11,11 is clipped, not refused.
+  EXPECT_TRUE(parseVisibleSimXml(withCsg("content=\"cube([30,2,2]);\""), "scene.xml").ok());
+  const auto scene = parseVisibleSimXml(withCsg("content=\"cube([4,4,2]);\""), "scene.xml");
+  EXPECT_TRUE(scene.ok()) << scene.error();
+}
+
 TEST(VisibleSimXmlTargets, RefusesBadCsgTargetsNamingTheirLineAndValue) {
   EXPECT_EQ(errorOf(xmlWithTargets("<target format=\"csg\"/>\n")),
             "scene.xml:7: target of format csg has no <csg> element");

@@ -42,12 +42,18 @@ async function check(name, body) {
 function assert(condition, message) {
   if (!condition) throw new Error(message);
 }
+// Run in the repository with paths relative to it, so that a trace's description (and the page's
+// title, in the pictures docs/ shows) names the scene as a user would.
 function run(...args) {
-  return execFileSync(datomsim, args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  return execFileSync(resolve(datomsim), args, {
+    cwd: repository,
+    encoding: 'utf8',
+    stdio: ['ignore', 'pipe', 'pipe'],
+  });
 }
 
 const scratch = mkdtempSync(join(tmpdir(), 'datomsim-colours-'));
-const scene = join(repository, 'scenes', 'paper-arch-hole2.json');
+const scene = join('scenes', 'paper-arch-hole2.json');
 
 // The pages: the scene at rest with weak latches (some overloaded), the paper's run with the
 // scene's default loads, and the paper's run with actuators.
@@ -64,7 +70,7 @@ function makePages() {
   view(scene, '--loads', file('weak.json'), '-o', file('weak.html'));
   // The walkers' run starts from its scene as the file has it (follow-gradient moves a module to
   // its start first: the loads of the scene file are not those of its trace's start).
-  const walkers = join(repository, 'scenes', 'walkers.json');
+  const walkers = join('scenes', 'walkers.json');
   run('loads', walkers, '--out', file('walkers-loads.json'));
   run('run', walkers, '--program', 'walkers', '--trace', file('run.jsonl'));
   view(file('run.jsonl'), '--loads', file('walkers-loads.json'), '-o', file('run.html'));

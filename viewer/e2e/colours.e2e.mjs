@@ -5,43 +5,19 @@
 //
 // Prints one line per check and `N passed, M failed`; exits non-zero on a failure.
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { dirname, join, resolve } from 'node:path';
-import { fileURLToPath, pathToFileURL } from 'node:url';
+import { join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
 import { launchBrowser } from './browser.mjs';
+import { assert, check, commonOptions, finish, repository } from './harness.mjs';
 
-const repository = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
-
-function option(name, fallback) {
-  const k = process.argv.indexOf(name);
-  return k >= 0 ? process.argv[k + 1] : fallback;
-}
-
-const datomsim = option('--datomsim', process.env.DATOMSIM);
-const shots = resolve(option('--shots', process.env.DATOMSIM_SHOTS || '/tmp/viewer-shots'));
-const givenBundle = option('--viewer-js', process.env.DATOMSIM_VIEWER_JS);
+const { datomsim, shots, givenBundle } = commonOptions();
 if (!datomsim) {
   console.error('usage: node viewer/e2e/colours.e2e.mjs --datomsim PATH [--shots DIR] [--viewer-js FILE]');
   process.exit(2);
 }
-mkdirSync(shots, { recursive: true });
 
-let passed = 0;
-let failed = 0;
-async function check(name, body) {
-  try {
-    await body();
-    ++passed;
-    console.log(`ok - ${name}`);
-  } catch (error) {
-    ++failed;
-    console.log(`not ok - ${name}\n  ${String(error.stack || error).split('\n').join('\n  ')}`);
-  }
-}
-function assert(condition, message) {
-  if (!condition) throw new Error(message);
-}
 // Run in the repository with paths relative to it, so that a trace's description (and the page's
 // title, in the pictures docs/ shows) names the scene as a user would.
 function run(...args) {
@@ -234,5 +210,4 @@ try {
   await close();
   rmSync(scratch, { recursive: true, force: true });
 }
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);
+finish();

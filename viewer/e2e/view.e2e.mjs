@@ -21,24 +21,17 @@
 // Catom per module in its cell and no Datom part, a Catom's panel, the run played to the goal.
 // Screenshots go to DIR (default /tmp/viewer-shots). Ends with "N passed, M failed".
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { dirname, join, resolve } from 'node:path';
-import { fileURLToPath, pathToFileURL } from 'node:url';
+import { join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
 import { launchBrowser } from './browser.mjs';
+import { assert, check, commonOptions, finish, repository } from './harness.mjs';
 
-const repository = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
 const GOAL = [6, 5, 2];
 const START = [0, 0, 2];
 
-function option(name, fallback) {
-  const k = process.argv.indexOf(name);
-  return k >= 0 && k + 1 < process.argv.length ? process.argv[k + 1] : fallback;
-}
-
-const datomsim = option('--datomsim', process.env.DATOMSIM);
-const shots = resolve(option('--shots', process.env.DATOMSIM_SHOTS || '/tmp/viewer-shots'));
-const givenBundle = option('--viewer-js', process.env.DATOMSIM_VIEWER_JS);
+const { datomsim, shots, givenBundle } = commonOptions();
 // Rows of a screenshot left out of its statistics: the control bar (92 px with the strip).
 const BAR = 100;
 // The walkers' scene: a 12x6x1 floor (ids 1..72) and 10 walkers on top, ids 73..82.
@@ -48,23 +41,7 @@ if (!datomsim || !existsSync(datomsim)) {
   console.error('view.e2e: give the datomsim binary: --datomsim PATH or DATOMSIM=PATH');
   process.exit(2);
 }
-mkdirSync(shots, { recursive: true });
 
-let passed = 0;
-let failed = 0;
-async function check(name, body) {
-  try {
-    await body();
-    ++passed;
-    console.log(`ok - ${name}`);
-  } catch (error) {
-    ++failed;
-    console.log(`not ok - ${name}\n  ${String(error.stack || error).split('\n').join('\n  ')}`);
-  }
-}
-function assert(condition, message) {
-  if (!condition) throw new Error(message);
-}
 
 function run(...args) {
   return execFileSync(datomsim, args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
@@ -705,5 +682,4 @@ try {
   rmSync(scratch, { recursive: true, force: true });
 }
 console.log(`screenshots in ${shots}`);
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);
+finish();

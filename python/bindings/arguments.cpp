@@ -27,7 +27,12 @@ std::string shortRepr(const py::handle& value) {
     return "?";
   }
   constexpr size_t kLongest = 60;
-  return text.size() > kLongest ? text.substr(0, kLongest) + "..." : text;
+  if (text.size() <= kLongest) return text;
+  // Cut between UTF-8 characters: half a character made the message invalid UTF-8, which Python
+  // could not decode, and the TypeError came without a message.
+  size_t cut = kLongest;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return text.substr(0, cut) + "...";
 }
 
 // The integer a value stands for (an int or a numpy integer), or nothing.

@@ -113,3 +113,11 @@ def test_a_wide_csg_target_is_refused_before_it_is_scanned(tmp_path):
         + spheres + ' }"}]}')
     with pytest.raises(datomsim.Error, match="containment tests"):
         datomsim.load_scene(scene).targets
+
+
+def test_a_long_repr_is_cut_between_characters():
+    # Found by hypothesis: a repr cut inside a character of four UTF-8 bytes left a TypeError
+    # without a message.
+    origin = {"\x1f\n\U00010b92\U00018cd6": 2**64, "0\x1f\u0100": 2**31}
+    with pytest.raises(TypeError, match="origin must be three integers"):
+        datomsim.box((1, 1, 1), origin)

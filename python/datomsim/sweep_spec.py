@@ -48,8 +48,28 @@ RUN_KEYWORDS = {
                "an object of numbers, strings and booleans"),
     "gravity": (lambda v: isinstance(v, (bool, str)), "true, false, \"on\" or \"off\""),
 }
+
+
 class SpecError(ValueError):
     """A spec that cannot be swept: the message names the key and the value."""
+
+
+def _check_json_values(spec: Any) -> None:
+    """Refuses a spec given from Python that holds what no JSON file could (an object, a set,
+    a key that is not a string), naming where: the messages and the cases' ids are JSON."""
+    pending = [("spec", spec)]
+    while pending:
+        where, value = pending.pop()
+        if isinstance(value, dict):
+            for key, item in value.items():
+                if not isinstance(key, str):
+                    raise SpecError(f"{where}: key {key!r} is not a string (a spec is JSON)")
+                pending.append((f"{where}.{key}", item))
+        elif isinstance(value, (list, tuple)):
+            pending.extend((f"{where}[{index}]", item) for index, item in enumerate(value))
+        elif value is not None and not isinstance(value, (str, int, float, bool)):
+            raise SpecError(f"{where}: a {type(value).__name__} is not a JSON value (a spec holds "
+                            "objects, lists, strings, numbers, booleans and null)")
 
 
 def _is_cell(value: Any) -> bool:
@@ -144,6 +164,7 @@ def cases(spec: dict) -> list[dict]:
     "case": id}, in the spec's order."""
     if not isinstance(spec, dict):
         raise SpecError("a spec is a JSON object with scenes, programs, parameters and seeds")
+    _check_json_values(spec)
     unknown = set(spec) - {"scenes", "programs", "parameters", "seeds"}
     if unknown:
         raise SpecError(f"unknown key(s) {', '.join(sorted(unknown))} (scenes, programs, "

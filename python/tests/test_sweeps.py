@@ -42,6 +42,9 @@ def test_a_spec_gives_every_combination_once():
     ({**SPEC, "scenes": [{"generate": "cube"}]}, 'generate "cube" is not one of'),
     ({**SPEC, "scenes": [{"generate": "box", "size": [1, 2, 3, 4, 5]}]}, "size: [1, 2, 3, 4, 5] is neither a cell"),
     ({**SPEC, "parameters": {"jitter_ms": []}}, "jitter_ms: an empty list sweeps over nothing"),
+    # Found by the fuzzing: a Python object where JSON is expected ended in json's TypeError.
+    ({**SPEC, "scenes": [{"generate": object()}]}, "spec.scenes[0].generate: a object is not a JSON value"),
+    ({**SPEC, "parameters": {1: 2}}, "spec.parameters: key 1 is not a string"),
 ])
 def test_a_bad_spec_is_refused_naming_what_is_wrong(spec, says):
     with pytest.raises(sweeps.SpecError) as raised:

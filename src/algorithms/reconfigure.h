@@ -261,6 +261,9 @@ class ReconfigureProgram : public Program {
   int32_t standing_ = kUnknown;
   uint64_t standingVersion_ = 0;
   int roundsWithoutDescent_ = 0;
+  // When the mover last arrived: its helpers latch to it again only once their pistons are back
+  // at rest, and a way down about one of them is not among its motions before.
+  Time arrivedAt_ = 0;
   // Rounds in a row in which no pivot knew a distance; past kRoundsBeforeFalling the mover falls.
   int roundsWithoutDistance_ = 0;
   static constexpr int kRoundsBeforeFalling = 5;

@@ -141,10 +141,15 @@ void ReconfigureProgram::choose(Context& context) {
     phase_ = Phase::kWaiting;
     return retryLater(context);
   }
-  // Down the gradient; sideways or up only when no way down has come for a few rounds.
+  // Down the gradient; sideways or up only when no way down has come for a few rounds, and not
+  // before the last motion's helpers are back at rest: a helper latches to the mover again only
+  // then, and until it does, the ways down about it are not among the mover's motions. With slow
+  // actuators (a 10 cm module's pistons and latches take seconds) the rounds alone ended first,
+  // and the mover walked sideways along a row for hours, each time before the way up was there.
   if (standingVersion_ != newest) standing_ = kUnknown;
+  const bool helpersBackAtRest = context.now() >= arrivedAt_ + pistonWait_;
   if (!falling && standing_ != kUnknown && candidateDistances_[best] >= standing_ &&
-      roundsWithoutDescent_ < 3) {
+      (roundsWithoutDescent_ < 3 || !helpersBackAtRest)) {
     ++roundsWithoutDescent_;
     phase_ = Phase::kWaiting;
     return retryLater(context);
@@ -276,6 +281,7 @@ void ReconfigureProgram::onMotionEnded(Context& context, const MotionEnded& ende
   }
   standing_ = chosenDistance_;
   standingVersion_ = chosenVersion_;
+  arrivedAt_ = context.now();
   idleRounds_ = 0;
   retryAfterRelease_ = false;
   releaseHelpers(context);

@@ -133,6 +133,22 @@ TEST_F(ActuatorsRun, SlowActuatorsStillBuildTheArch) {
   EXPECT_GT(run["makespan_s"].get<double>(), 600.0);
 }
 
+// A mover's helpers latch to it again only once their pistons are back at rest, and the ways down
+// the gradient about them are not among its motions before. A 10 cm module's latching takes
+// seconds: a mover that went sideways after its few short rounds walked along a row of the arch's
+// leg for hours, each time before the way up was there, and the lintel's last cell stayed empty
+// (three of these arches, with SMA springs, stalled so).
+TEST_F(ActuatorsRun, AMoverWaitsForItsHelpersToLatchAgainBeforeGoingSideways) {
+  const std::string scene = std::string(DATOMSIM_SOURCE_DIR) + "/scenes/reshape-arch-hole2.json";
+  for (const char* combination : {"sma-spring+mechanical", "sma-spring+electrostatic"}) {
+    const Outcome outcome = datomsim("run " + scene + " --program reconfigure --actuators " +
+                                     combination + " --size 10cm --out " + path("arch.json"));
+    ASSERT_EQ(outcome.status, 0) << combination << "\n" << outcome.output.substr(0, 2000);
+    const nlohmann::json run = nlohmann::json::parse(readText(path("arch.json")));
+    EXPECT_TRUE(run["success"].get<bool>()) << combination;
+  }
+}
+
 // A mover gives a round up when its helpers have not answered within a few seconds, and a helper
 // lets its piston go when the motion it was held for has not come within a minute: both are waits
 // for pistons and motions, which a 10 cm module's latches (5.2 s a mechanical latching) and

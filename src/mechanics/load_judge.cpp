@@ -37,7 +37,7 @@ LoadRefusal overloadText(const LoadModel& model, const Beam& beam, const LatchLo
           "latch {}-{} {} {} (limit {})", std::min(a, b).value, std::max(a, b).value, verb,
           elastic::quantityText(byMoment ? moment : force, byMoment ? "N m" : "N"),
           elastic::quantityText(byMoment ? p.latchMoment : p.latchForce, byMoment ? "N m" : "N")),
-      std::min(a, b), std::max(a, b), std::nullopt};
+      std::min(a, b), std::max(a, b), std::nullopt, std::nullopt};
 }
 
 // The latch of least safety, or none when no latch carries anything.
@@ -79,13 +79,7 @@ std::optional<LoadRefusal> LoadJudge::judge(const world::World& world, const Loa
   for (uint32_t k = 0; k < change.hanging.size(); ++k) hangingSlot_[change.hanging[k].module] = k;
   if (change.mover) hangingSlot_[change.mover->module] = uint32_t(change.hanging.size());
   std::optional<LoadRefusal> refused = judgePieces(world, change);
-  if (!refused && change.mover) {
-    for (const geometry::Cell& at : change.mover->at) {
-      if ((refused = judgeTipping(world, change, &at))) break;
-    }
-  } else if (!refused) {
-    refused = judgeTipping(world, change, nullptr);
-  }
+  if (!refused) refused = judgeTipping(world, change);
   for (const Hanging& hanging : change.hanging) hangingSlot_[hanging.module] = kNotHanging;
   if (change.mover) hangingSlot_[change.mover->module] = kNotHanging;
   if (refused) ++counts_.refused;
@@ -103,13 +97,27 @@ struct HangingLoad {
   geometry::Vec3 latchMoment;  // N m, about the latch
 };
 
+// The same, `lever` the module's centre less its pivot's (m). The latch is taken at the middle
+// of the lever on the way too, as at the ends.
+HangingLoad hangingLoad(const LoadParameters& parameters, const geometry::Vec3& lever) {
+  const geometry::Vec3 weight = parameters.gravity * elastic::moduleMass(parameters);
+  return {weight, geometry::cross(lever, weight), geometry::cross(lever * 0.5, weight)};
+}
+
 HangingLoad hangingLoad(const LoadParameters& parameters, const geometry::Cell& at,
                         const geometry::Cell& pivotAt) {
   const double spacing = 2.0 * parameters.radius;
-  const geometry::Vec3 weight = parameters.gravity * elastic::moduleMass(parameters);
-  const geometry::Vec3 lever =
-      geometry::worldPosition(at, spacing) - geometry::worldPosition(pivotAt, spacing);
-  return {weight, geometry::cross(lever, weight), geometry::cross(lever * 0.5, weight)};
+  return hangingLoad(
+      parameters, geometry::worldPosition(at, spacing) - geometry::worldPosition(pivotAt, spacing));
+}
+
+// Two unit vectors across gravity: the moment of a weight about any point lies in their plane.
+std::array<geometry::Vec3, 2> acrossGravity(const geometry::Vec3& gravity) {
+  const geometry::Vec3 down = geometry::normalized(gravity);
+  const geometry::Vec3 other =
+      std::abs(down.x) < 0.9 ? geometry::Vec3{1, 0, 0} : geometry::Vec3{0, 1, 0};
+  const geometry::Vec3 first = geometry::normalized(geometry::cross(down, other));
+  return {first, geometry::cross(down, first)};
 }
 
 }  // namespace
@@ -125,8 +133,7 @@ std::optional<LoadRefusal> LoadJudge::judgePieces(const world::World& world,
   auto isHanging = [&](uint32_t index) { return hangingSlot_[index] != kNotHanging; };
   // The latch that holds the mover: determinate, judged first.
   auto hingeRefusal = [&](uint32_t module, uint32_t pivot,
-                          const geometry::Cell& at) -> std::optional<LoadRefusal> {
-    const HangingLoad load = hangingLoad(parameters_, at, modules[pivot].cell);
+                          const HangingLoad& load) -> std::optional<LoadRefusal> {
     LatchLoad latch;
     latch.force = load.force;
     latch.moment = load.latchMoment;
@@ -135,13 +142,23 @@ std::optional<LoadRefusal> LoadJudge::judgePieces(const world::World& world,
     LoadModel pair;
     pair.parameters = parameters_;
     pair.nodes = {{modules[pivot].id, {}, {}, false}, {modules[module].id, {}, {}, false}};
-    LoadRefusal refused = overloadText(pair, {0, 1, 0}, latch);
-    refused.moverAt = at;
-    return refused;
+    return overloadText(pair, {0, 1, 0}, latch);
   };
   if (change.mover) {
-    for (const geometry::Cell& at : change.mover->at) {
-      if (auto refused = hingeRefusal(change.mover->module, change.mover->pivot, at)) {
+    const Mover& mover = *change.mover;
+    const geometry::Cell& pivotAt = modules[mover.pivot].cell;
+    for (const geometry::Cell& at : mover.at) {
+      const HangingLoad load = hangingLoad(parameters_, at, pivotAt);
+      if (auto refused = hingeRefusal(mover.module, mover.pivot, load)) {
+        refused->moverAt = at;
+        return refused;
+      }
+    }
+    const geometry::Vec3 pivotCentre = geometry::worldPosition(pivotAt, spacing);
+    for (size_t k = 0; k < mover.between.size(); ++k) {
+      const HangingLoad load = hangingLoad(parameters_, mover.between[k] - pivotCentre);
+      if (auto refused = hingeRefusal(mover.module, mover.pivot, load)) {
+        refused->moverBetween = k;
         return refused;
       }
     }
@@ -222,7 +239,7 @@ std::optional<LoadRefusal> LoadJudge::judgePieces(const world::World& world,
           fmt::format("module {} at {} would be tied to the ground by no chain of latches: "
                       "nothing would hold it",
                       module.id.value, geometry::toString(module.cell)),
-          module.id, module.id, std::nullopt};
+          module.id, module.id, std::nullopt, std::nullopt};
     }
   }
   // The modules hanging in every case; then the mover at each of its places, a case each.
@@ -233,21 +250,35 @@ std::optional<LoadRefusal> LoadJudge::judgePieces(const world::World& world,
     common.push_back({node_[hanging.pivot], load.force, load.moment});
   }
   std::vector<std::vector<NodeLoad>> cases;
+  size_t placeCases = 1;
   if (change.mover) {
+    const uint32_t pivot = node_[change.mover->pivot];
     for (const geometry::Cell& at : change.mover->at) {
       cases.push_back(common);
       const HangingLoad load = hangingLoad(parameters_, at, modules[change.mover->pivot].cell);
-      cases.back().push_back({node_[change.mover->pivot], load.force, load.moment});
+      cases.back().push_back({pivot, load.force, load.moment});
+    }
+    placeCases = cases.size();
+    // The places between, by superposition: the loads are linear in the moment of the mover's
+    // weight about its pivot, which lies across gravity (one factorisation for every place).
+    if (!change.mover->between.empty()) {
+      const geometry::Vec3 weight = parameters_.gravity * model.moduleMass;
+      cases.push_back(common);
+      cases.back().push_back({pivot, weight, {}});
+      for (const geometry::Vec3& axis : acrossGravity(parameters_.gravity)) {
+        cases.push_back(common);
+        cases.back().push_back({pivot, weight, axis});
+      }
     }
   } else {
-    cases.push_back(std::move(common));
+    cases.push_back(common);
   }
   ++counts_.solves;
   counts_.modules += model.nodes.size();
   counts_.largest = std::max<uint64_t>(counts_.largest, model.nodes.size());
   auto solved = solveLoadCases(model, cases);
-  if (!solved) return LoadRefusal{"the loads cannot be solved: " + solved.error(), {}, {}, {}};
-  for (size_t c = 0; c < solved->size(); ++c) {
+  if (!solved) return LoadRefusal{"the loads cannot be solved: " + solved.error(), {}, {}, {}, {}};
+  for (size_t c = 0; c < placeCases; ++c) {
     const LoadSolution& solution = (*solved)[c];
     if (const auto worst = weakest(solution); worst && solution.latches[*worst].safety < 1) {
       LoadRefusal refused = overloadText(model, model.beams[*worst], solution.latches[*worst]);
@@ -255,36 +286,108 @@ std::optional<LoadRefusal> LoadJudge::judgePieces(const world::World& world,
       return refused;
     }
   }
+  if (solved->size() == placeCases) return std::nullopt;
+  return judgeBetween(model, change, world, std::span(*solved).subspan(placeCases), common);
+}
+
+std::optional<LoadRefusal> LoadJudge::judgeBetween(const LoadModel& model, const LoadChange& change,
+                                                   const world::World& world,
+                                                   std::span<const LoadSolution> superposed,
+                                                   const std::vector<NodeLoad>& common) {
+  const Mover& mover = *change.mover;
+  const double spacing = 2.0 * parameters_.radius;
+  const geometry::Vec3 pivotCentre =
+      geometry::worldPosition(world.modules()[mover.pivot].cell, spacing);
+  const std::array<geometry::Vec3, 2> axes = acrossGravity(parameters_.gravity);
+  const geometry::Vec3 weight = parameters_.gravity * model.moduleMass;
+  const LoadSolution& base = superposed[0];
+  for (size_t k = 0; k < mover.between.size(); ++k) {
+    const geometry::Vec3 moment = geometry::cross(mover.between[k] - pivotCentre, weight);
+    const double along[2] = {geometry::dot(moment, axes[0]), geometry::dot(moment, axes[1])};
+    std::optional<size_t> worst;
+    double least = 1;
+    for (size_t b = 0; b < base.latches.size(); ++b) {
+      geometry::Vec3 force = base.latches[b].force, turn = base.latches[b].moment;
+      for (int a = 0; a < 2; ++a) {
+        force += (superposed[1 + a].latches[b].force - base.latches[b].force) * along[a];
+        turn += (superposed[1 + a].latches[b].moment - base.latches[b].moment) * along[a];
+      }
+      const double safety = std::min(parameters_.latchForce / geometry::norm(force),
+                                     parameters_.latchMoment / geometry::norm(turn));
+      if (safety < least) least = safety, worst = b;
+    }
+    if (!worst) continue;
+    // The place overloads a latch: solved as a case of its own, for the exact figures.
+    std::vector<std::vector<NodeLoad>> exact{common};
+    exact.back().push_back({node_[mover.pivot], weight, moment});
+    ++counts_.solves;
+    auto solved = solveLoadCases(model, exact);
+    if (!solved)
+      return LoadRefusal{"the loads cannot be solved: " + solved.error(), {}, {}, {}, {}};
+    const LoadSolution& solution = solved->front();
+    if (const auto at = weakest(solution); at && solution.latches[*at].safety < 1) {
+      LoadRefusal refused = overloadText(model, model.beams[*at], solution.latches[*at]);
+      refused.moverBetween = k;
+      return refused;
+    }
+  }
   return std::nullopt;
 }
 
 std::optional<LoadRefusal> LoadJudge::judgeTipping(const world::World& world,
-                                                   const LoadChange& change,
-                                                   const geometry::Cell* moverAt) {
+                                                   const LoadChange& change) {
   const double spacing = 2.0 * parameters_.radius;
+  // Every module's centre but the mover's, summed; the ground layer's.
   geometry::Vec3 sum;
   std::vector<geometry::Vec3> ground;
   ground.reserve(ground_.size());
   const std::span<const world::Module> modules = world.modules();
+  const uint32_t moverSlot = uint32_t(change.hanging.size());
   for (uint32_t index = 0; index < modules.size(); ++index) {
     const uint32_t slot = hangingSlot_[index];
-    const geometry::Cell& cell = slot == kNotHanging            ? modules[index].cell
-                                 : slot < change.hanging.size() ? change.hanging[slot].at
-                                                                : *moverAt;
+    if (change.mover && slot == moverSlot) continue;
+    const geometry::Cell& cell =
+        slot == kNotHanging ? modules[index].cell : change.hanging[slot].at;
     const geometry::Vec3 centre = geometry::worldPosition(cell, spacing);
     sum += centre;
     if (cell.z == 0) ground.push_back(centre);
   }
-  // The ground layer changes only when a module leaves or reaches it: its support is kept.
-  if (ground != ground_ || support_.empty()) {
-    support_ = supportOf(ground, parameters_.radius);
-    ground_ = std::move(ground);
+  const size_t groundOfOthers = ground.size();
+  auto tips = [&](const geometry::Vec3& moverCentre, bool moverOnGround) {
+    ground.resize(groundOfOthers);
+    if (moverOnGround) ground.push_back(moverCentre);
+    // The ground layer changes only when a module leaves or reaches it: its support is kept.
+    if (ground != ground_ || support_.empty()) {
+      support_ = supportOf(ground, parameters_.radius);
+      ground_ = ground;
+    }
+    return tippingOver((sum + moverCentre) / double(modules.size()), support_, parameters_.gravity);
+  };
+  auto refusal = [](const Tipping& tipping) {
+    return LoadRefusal{
+        "the ensemble would tip: " + tipping.reason, {}, {}, std::nullopt, std::nullopt};
+  };
+  if (!change.mover) {
+    const Tipping tipping = tips({}, false);
+    if (!tipping.tips) return std::nullopt;
+    return refusal(tipping);
   }
-  const Tipping tipping = tippingOver(sum / double(modules.size()), support_, parameters_.gravity);
-  if (!tipping.tips) return std::nullopt;
-  LoadRefusal refused{"the ensemble would tip: " + tipping.reason, {}, {}, std::nullopt};
-  if (moverAt) refused.moverAt = *moverAt;
-  return refused;
+  for (const geometry::Cell& at : change.mover->at) {
+    const Tipping tipping = tips(geometry::worldPosition(at, spacing), at.z == 0);
+    if (!tipping.tips) continue;
+    LoadRefusal refused = refusal(tipping);
+    refused.moverAt = at;
+    return refused;
+  }
+  // On its way the mover stands on nothing: it is no support.
+  for (size_t k = 0; k < change.mover->between.size(); ++k) {
+    const Tipping tipping = tips(change.mover->between[k], false);
+    if (!tipping.tips) continue;
+    LoadRefusal refused = refusal(tipping);
+    refused.moverBetween = k;
+    return refused;
+  }
+  return std::nullopt;
 }
 
 }  // namespace datomsim::mechanics

@@ -27,6 +27,8 @@
 #include "datomsim/result.h"
 #include "elastic/load_parameters.h"
 #include "geometry/cell.h"
+#include "mechanics/load_model.h"
+#include "mechanics/load_solver.h"
 #include "mechanics/tipping.h"
 #include "world/latch_search.h"
 #include "world/world.h"
@@ -42,11 +44,13 @@ struct Hanging {
 };
 
 // The mobile of the motion judged: held by its pivot alone at each of `at` in turn (its start and
-// its goal).
+// its goal), then at each place `between` them on its way (its centre's world position, m;
+// datom/motion_path.h).
 struct Mover {
   uint32_t module = 0;
   uint32_t pivot = 0;
   std::span<const geometry::Cell> at;
+  std::span<const geometry::Vec3> between;
 };
 
 // A change of the world's latched ensemble: latches let go (both ends listed), modules hanging,
@@ -59,11 +63,13 @@ struct LoadChange {
 };
 
 // Why a change is refused, in words ("latch 12-37 would carry 12.4 mN m (limit 10 mN m)"), the
-// latch at stake when a latch is, and the mover's place when that place is the reason.
+// latch at stake when a latch is, and the mover's place when that place is the reason: one of
+// its cells, or the index of a place between them.
 struct LoadRefusal {
   std::string text;
   ModuleId a, b;
   std::optional<geometry::Cell> moverAt;
+  std::optional<size_t> moverBetween;
 };
 
 // What the judge has done, for a run's statistics.
@@ -97,9 +103,15 @@ class LoadJudge {
   // The pieces the change touches, solved for each place of the mover; a refusal when a piece is
   // held by nothing or a latch is overloaded.
   std::optional<LoadRefusal> judgePieces(const world::World& world, const LoadChange& change);
-  // The whole ensemble after the change, the mover at `moverAt` if any: does it tip?
-  std::optional<LoadRefusal> judgeTipping(const world::World& world, const LoadChange& change,
-                                          const geometry::Cell* moverAt);
+  // The mover at its places between its cells, from the solutions of its piece under its weight
+  // at its pivot (`base`) and with a unit moment about each of two axes across gravity: the loads
+  // at each place are their sum, weighted by the moment of its weight there.
+  std::optional<LoadRefusal> judgeBetween(const LoadModel& model, const LoadChange& change,
+                                          const world::World& world,
+                                          std::span<const LoadSolution> superposed,
+                                          const std::vector<NodeLoad>& common);
+  // The whole ensemble after the change, the mover at each of its places if any: does it tip?
+  std::optional<LoadRefusal> judgeTipping(const world::World& world, const LoadChange& change);
 
   elastic::LoadParameters parameters_;
   size_t region_ = 0;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "datom/linkage.h"
+#include "datom/motion_path.h"
 #include "datom/parts.h"
 #include "geometry/lattice.h"
 
@@ -206,7 +207,8 @@ void TraceWriter::deformationRefused(Time t, ModuleId, std::string_view, const s
 }
 
 void TraceWriter::turnStarted(Time t, const sim::QuarterTurn& turn) {
-  const Vec3 centre = hinge(geometry::worldPosition(turn.pivotCell, spacing()), turn.up, turn.side);
+  const Vec3 centre = datom::turnHinge(
+      dimensions_, geometry::worldPosition(turn.pivotCell, spacing()), turn.up, turn.side);
   const bool compressing = turn.first;
   // The body turns twice as far as each connector (pivot's and mobile's turn together): the
   // fraction turned is theta(f) / 45 degrees, with f going 0 -> 1, or 1 -> 0 on the way back.
@@ -239,14 +241,6 @@ void TraceWriter::rollStarted(Time t, const sim::RollTurn& roll) {
                  "\"d\":{}}}}}\n",
                  seconds(t), roll.mobile.value, vec(axis), vec(centre), number(roll.degrees),
                  seconds(roll.duration));
-}
-
-Vec3 TraceWriter::hinge(const Vec3& pivot, int up, int side) const {
-  // Compressed, the pivot's connectors lie in the plane at c/2 + e along U; the hinge edge is
-  // (r + c/2) / sqrt2 out towards the side (datom/piston_pose.h).
-  const datom::Dimensions& d = dimensions_;
-  return pivot + geometry::axisVector(up) * (d.connectorWidth() / 2 + d.linkLength()) +
-         geometry::axisVector(side) * ((d.radius() + d.connectorWidth() / 2) / std::sqrt(2.0));
 }
 
 void TraceWriter::modulePlaced(Time t, const world::Module& module) {

@@ -60,11 +60,6 @@ class TraceWriter final : public sim::Observer {
   void colorChanged(Time t, ModuleId module, Color color) override;
   void programLog(Time t, ModuleId module, std::string_view text) override;
 
-  // The hinge a mobile turns about: the outer edge of the pivot's connector towards `side`
-  // (world axis: -F for the first quarter turn, G for the second) when the pivot's piston `up`
-  // is compressed, where the latched faces meet (datom-model.md).
-  geometry::Vec3 hinge(const geometry::Vec3& pivot, int up, int side) const;
-
   double spacing() const { return 2.0 * dimensions_.radius(); }
   world::ModuleKind moduleKind() const { return kind_; }
   // Everything recorded so far; the command line writes it to a file.

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "catom3d/rolling.h"
+#include "datom/motion_path.h"
 #include "datomsim/move_result.h"
 #include "datomsim/result.h"
 #include "elastic/load_parameters.h"
@@ -47,6 +48,10 @@
 #include "world/world.h"
 
 namespace datomsim::sim {
+
+// A Datom's motion's two quarter turns in world axes (docs/conventions.md, section 5): about -R
+// through the hinge on the side -F, then about U x G through the hinge on the goal's side G.
+datom::QuarterTurns quarterTurnsOf(const motion::Rule& rule);
 
 // A motion in progress.
 struct ActiveMotion {
@@ -158,8 +163,9 @@ class MotionExecutor {
                                                const motion::Motion& motion) const;
   // The mobiles of the motions in progress, hanging on their pivots at their starts.
   std::vector<mechanics::Hanging> hangingNow() const;
-  // Gravity on: the refusal of a motion whose mobile, hanging on its pivot at its start or its
-  // goal with `broken` let go, would overload a latch or tip the ensemble; or nullopt.
+  // Gravity on: the refusal of a motion whose mobile, hanging on its pivot at its start, on its
+  // way or at its goal with `broken` let go, would overload a latch or tip the ensemble; or
+  // nullopt.
   std::optional<MoveRefusal> judgeLoads(uint32_t mobileIndex, uint32_t pivotIndex,
                                         const motion::Motion& motion,
                                         std::span<const world::BrokenLatch> broken);

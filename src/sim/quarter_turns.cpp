@@ -11,6 +11,14 @@ namespace datomsim::sim {
 using geometry::Orientation;
 using world::Module;
 
+datom::QuarterTurns quarterTurnsOf(const motion::Rule& rule) {
+  const int goalAxis = rule.turn == motion::Turn::kLeft    ? geometry::oppositeAxis(rule.right)
+                       : rule.turn == motion::Turn::kRight ? rule.right
+                                                           : rule.front;
+  return {rule.up, geometry::oppositeAxis(rule.front), geometry::oppositeAxis(rule.right), goalAxis,
+          *geometry::crossAxes(rule.up, goalAxis)};
+}
+
 bool ActiveMotion::hasDoubleDeformation() const {
   return std::any_of(plan.deformations.begin(), plan.deformations.end(),
                      [](const motion::Deformation& d) { return d.secondAxis >= 0; });
@@ -64,18 +72,15 @@ ActiveMotion MotionExecutor::plan(const motion::Motion& motion, uint32_t mobileI
   active.plan = motion;
   active.mobile = mobileIndex;
   active.pivot = pivotIndex;
-  active.goalAxis = rule.turn == motion::Turn::kLeft    ? geometry::oppositeAxis(rule.right)
-                    : rule.turn == motion::Turn::kRight ? rule.right
-                                                        : rule.front;
+  const datom::QuarterTurns turns = quarterTurnsOf(rule);
+  active.goalAxis = turns.secondSide;
   const int towardsGoal = *geometry::directionOfOffset(rule.goalOffset);
   active.pivotOld = pivot.orientation.ownConnector(rule.mobileDirection);
   active.mobileOld =
       mobile.orientation.ownConnector(geometry::oppositeDirection(rule.mobileDirection));
   active.pivotNew = pivot.orientation.ownConnector(towardsGoal);
-  const int firstTurnAxis = geometry::oppositeAxis(rule.right);
-  const int secondTurnAxis = *geometry::crossAxes(rule.up, active.goalAxis);
-  active.middle = mobile.orientation.then(Orientation::quarterTurn(firstTurnAxis));
-  active.end = active.middle.then(Orientation::quarterTurn(secondTurnAxis));
+  active.middle = mobile.orientation.then(Orientation::quarterTurn(turns.firstAxis));
+  active.end = active.middle.then(Orientation::quarterTurn(turns.secondAxis));
   active.mobileNew = active.middle.ownConnector(
       *geometry::directionOfAxes(geometry::oppositeAxis(rule.up), active.goalAxis));
   return active;

@@ -102,7 +102,7 @@ TEST(LoadJudge, FindsTheSameOverloadedLatchAsTheWholeModelOfTheChangedWorld) {
   const std::vector<world::BrokenLatch> released = allLatchesBut(world, mobile, pivot);
   ASSERT_FALSE(released.empty());
   const std::array<geometry::Cell, 1> place = {geometry::Cell{1, 2, 2}};
-  const Mover hanging{mobile, pivot, place};
+  const Mover hanging{mobile, pivot, place, {}};
 
   // The same change made on a copy of the world, solved whole.
   world::World changed = world;
@@ -139,7 +139,7 @@ TEST(LoadJudge, AMobileHangingAtTheTipOfAnArmLoadsItsRootAsALongerArmWould) {
   const world::World world = builder.build();
   const Weakest longer = weakestOf(footedCantilever(3, 5), {});
   const std::array<geometry::Cell, 1> place = {geometry::Cell{5, 0, 2}};
-  const Mover hanging{indexOf(world, {20, 0, 0}), indexOf(world, {4, 0, 2}), place};
+  const Mover hanging{indexOf(world, {20, 0, 0}), indexOf(world, {4, 0, 2}), place, {}};
 
   LoadJudge tight(scaledSoThat(longer.safety, 0.999));
   const auto refused = tight.judge(world, {{}, {}, hanging});
@@ -152,10 +152,63 @@ TEST(LoadJudge, AMobileHangingAtTheTipOfAnArmLoadsItsRootAsALongerArmWould) {
 
   // Its way from above the tip to beyond it: two cases of one model, the second refused.
   const std::array<geometry::Cell, 2> way = {geometry::Cell{4, 0, 3}, geometry::Cell{5, 0, 2}};
-  const auto onTheWay = tight.judge(world, {{}, {}, Mover{hanging.module, hanging.pivot, way}});
+  const auto onTheWay = tight.judge(world, {{}, {}, Mover{hanging.module, hanging.pivot, way, {}}});
   ASSERT_TRUE(onTheWay.has_value());
   EXPECT_EQ(onTheWay->moverAt, geometry::Cell(5, 0, 2));
   EXPECT_EQ(tight.counts().solves, 2u);
+}
+
+TEST(LoadJudge, APlaceOnTheWayIsWeighedAsACaseOfItsOwnWouldBe) {
+  // The arm of 4 on a column of 3; the mover hangs from its tip above it (a cell), then on its way
+  // half a spacing further out than any cell around (a place between): the judge weighs the places
+  // between by superposition, and must find what the place solved alone gives.
+  WorldBuilder builder;
+  for (int z = 0; z < 3; ++z) builder.module({0, 0, z});
+  for (int k = 1; k <= 4; ++k) builder.module({k, 0, 2});
+  builder.module({20, 0, 0});
+  addWideFooting(builder);
+  const world::World world = builder.build();
+  const LoadParameters defaults;
+  const double spacing = 2.0 * defaults.radius;
+  const uint32_t pivot = indexOf(world, {4, 0, 2});
+  const geometry::Vec3 pivotCentre = geometry::worldPosition({4, 0, 2}, spacing);
+  const std::array<geometry::Vec3, 1> between = {pivotCentre +
+                                                 geometry::Vec3{1.5 * spacing, 0.2 * spacing, 0}};
+
+  // The place solved alone: the mover's weight and its moment about the pivot, on the whole model.
+  Result<LoadModel> model = buildLoadModel(world, defaults);
+  ASSERT_TRUE(model.ok()) << model.error();
+  uint32_t pivotNode = 0;
+  while (model->nodes[pivotNode].module != world.modules()[pivot].id) ++pivotNode;
+  const geometry::Vec3 weight = defaults.gravity * model->moduleMass;
+  const std::vector<std::vector<NodeLoad>> alone = {
+      {{pivotNode, weight, geometry::cross(between[0] - pivotCentre, weight)}}};
+  auto solved = solveLoadCases(*model, alone);
+  ASSERT_TRUE(solved.ok()) << solved.error();
+  Weakest exact{1e300, {}, {}};
+  for (size_t k = 0; k < model->beams.size(); ++k) {
+    if (solved->front().latches[k].safety < exact.safety) {
+      const ModuleId a = model->nodes[model->beams[k].a].module;
+      const ModuleId b = model->nodes[model->beams[k].b].module;
+      exact = {solved->front().latches[k].safety, std::min(a, b), std::max(a, b)};
+    }
+  }
+  ASSERT_LT(exact.safety, 1e300);
+
+  const std::array<geometry::Cell, 1> above = {geometry::Cell{4, 0, 3}};
+  const Mover mover{indexOf(world, {20, 0, 0}), pivot, above, between};
+  LoadJudge tight(scaledSoThat(exact.safety, 0.999));
+  const auto refused = tight.judge(world, {{}, {}, mover});
+  ASSERT_TRUE(refused.has_value());
+  EXPECT_NE(refused->text.find(latchName(exact) + "would carry"), std::string::npos)
+      << refused->text;
+  EXPECT_EQ(refused->moverBetween, size_t(0));
+  EXPECT_FALSE(refused->moverAt.has_value());
+  LoadJudge loose(scaledSoThat(exact.safety, 1.001));
+  const auto allowed = loose.judge(world, {{}, {}, mover});
+  EXPECT_FALSE(allowed.has_value()) << allowed->text;
+  // Without the place between, the tight limits let the way pass: the ends alone miss it.
+  EXPECT_FALSE(tight.judge(world, {{}, {}, Mover{mover.module, pivot, above, {}}}).has_value());
 }
 
 TEST(LoadJudge, RefusesToLetGoOfTheOnlyLatchThatHoldsAPiece) {
@@ -203,7 +256,7 @@ TEST(LoadJudge, RefusesAChangeThatTipsTheEnsembleAndCheckAtRestRefusesASceneThat
   const uint32_t mover = indexOf(world, {-2, 0, 1});
   const std::vector<world::BrokenLatch> released = allLatchesBut(world, mover, UINT32_MAX);
   const std::array<geometry::Cell, 1> place = {geometry::Cell{standing + 1, 0, 1}};
-  const Mover hanging{mover, indexOf(world, {standing, 0, 1}), place};
+  const Mover hanging{mover, indexOf(world, {standing, 0, 1}), place, {}};
   ASSERT_EQ(world.moduleAt({standing + 1, 0, 1}), nullptr);
   LoadJudge judge(strong);
   const auto refused = judge.judge(world, {released, {}, hanging});
@@ -222,7 +275,7 @@ TEST(LoadJudge, SolvesOnlyThePieceAroundTheChangeOnAFloor) {
   const uint32_t pivot = indexOf(world, {2, 2, 0});
   const std::vector<world::BrokenLatch> released = allLatchesBut(world, mover, pivot);
   const std::array<geometry::Cell, 1> place = {geometry::Cell{2, 2, 1}};
-  const Mover hanging{mover, pivot, place};
+  const Mover hanging{mover, pivot, place, {}};
   LoadJudge judge(LoadParameters{});
   EXPECT_FALSE(judge.judge(world, {released, {}, hanging}).has_value());
   EXPECT_EQ(judge.counts().solves, 1u);

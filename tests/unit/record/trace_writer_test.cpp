@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -68,8 +69,14 @@ TEST(TraceWriter, RecordsAMotionAsTheSimulatorAnnouncesIt) {
                           ") towards " + geometry::toString(pivot + rule.goalOffset));
   // Two quarter turns of 90 degrees, the first about -R through the hinge on the -F side.
   ASSERT_EQ(turns.size(), 2u);
-  const geometry::Vec3 hinge = trace.hinge(geometry::worldPosition(pivot, trace.spacing()), rule.up,
-                                           geometry::oppositeAxis(rule.front));
+  // The hinge: the edge of the pivot's compressed connector, c/2 + e along U and (r + c/2) / sqrt2
+  // towards -F (the unit Datom: r = 1).
+  const datom::Dimensions unit;
+  const geometry::Vec3 hinge =
+      geometry::worldPosition(pivot, trace.spacing()) +
+      geometry::axisVector(rule.up) * (unit.connectorWidth() / 2 + unit.linkLength()) +
+      geometry::axisVector(geometry::oppositeAxis(rule.front)) *
+          ((1 + unit.connectorWidth() / 2) / std::sqrt(2.0));
   EXPECT_NEAR(turns[0]["centre"][0].get<double>(), hinge.x, 1e-5);
   EXPECT_NEAR(turns[0]["centre"][1].get<double>(), hinge.y, 1e-5);
   EXPECT_NEAR(turns[0]["centre"][2].get<double>(), hinge.z, 1e-5);

@@ -68,12 +68,6 @@ class MotionHelpers {
   // An AckDeform (`granted`) or NackDeform heard: whether every helper has answered now, and how.
   // Answers to other requests (a late one of an earlier round) and second answers are ignored.
   Answers hear(const RoutedMsg& answer, bool granted);
-  // Stops waiting for answers (they are lost): counted as a refusal.
-  void giveUp() {
-    waiting_ = 0;
-    refused_ = true;
-  }
-
   // Lets go of every helper asked, not only those heard from: an answer may have been lost on its
   // way back (a helper whose piston retracts the connector that faced the mobile), and a release
   // for a request never granted is answered and ignored.

@@ -23,10 +23,13 @@ void ReconfigureProgram::onWatchdog(Context& context, uint32_t round) {
     waitingReplies_ = 0;
     retryLater(context);
   } else if (phase_ == Phase::kDeforming) {
-    helpers_.giveUp();
-    attemptFailed();
-    retryAfterRelease_ = true;
-    releaseHelpers(context);
+    // An answer lost on its way back: the helper's compressed piston may have cut the latches
+    // its request came by, and on a thin part (an arch's top) no other route is within reach.
+    // The motion itself says whether every helper is ready: the rules refuse it while one is
+    // not compressed, and the helpers are let go as after any refusal. Giving the round up
+    // instead left a mover circling an arch's top for hours, its last cell one helper away.
+    helpers_.stopWaiting();
+    move(context);
   } else if (phase_ == Phase::kReleasing) {
     helpers_.stopWaiting();
     afterRelease(context);

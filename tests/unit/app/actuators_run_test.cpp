@@ -149,6 +149,21 @@ TEST_F(ActuatorsRun, AMoverWaitsForItsHelpersToLatchAgainBeforeGoingSideways) {
   }
 }
 
+// On the arch's thin top, a helper's compressed piston lets go of the latches its request came
+// by, and its answer may find no way back within its hops. The mover whose answers do not come
+// tries the motion (the rules refuse it unless every helper is compressed): with 10 cm ribbons
+// and electromagnetic latches it gave the round up instead, every time, and circled the top for
+// hours with the last cell one helper away (seeds 1 and 4; seed 1 here).
+TEST_F(ActuatorsRun, AMoverWhoseHelpersAnswersAreLostTriesTheMotion) {
+  const std::string scene = std::string(DATOMSIM_SOURCE_DIR) + "/scenes/reshape-arch-hole2.json";
+  const Outcome outcome = datomsim(
+      "run " + scene + " --program reconfigure --actuators electro-ribbon+electromagnetic" +
+      " --size 10cm --out " + path("arch.json"));
+  ASSERT_EQ(outcome.status, 0) << outcome.output.substr(0, 2000);
+  const nlohmann::json run = nlohmann::json::parse(readText(path("arch.json")));
+  EXPECT_TRUE(run["success"].get<bool>());
+}
+
 // A mover gives a round up when its helpers have not answered within a few seconds, and a helper
 // lets its piston go when the motion it was held for has not come within a minute: both are waits
 // for pistons and motions, which a 10 cm module's latches (5.2 s a mechanical latching) and

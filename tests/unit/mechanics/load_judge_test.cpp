@@ -73,6 +73,17 @@ world::World footedCantilever(int height, int arm) {
   return builder.build();
 }
 
+// An arm of 4 on a column of 3 on its wide footing, and a module alone on the ground far away
+// (the mover of the tests).
+world::World armAndALoneModule() {
+  WorldBuilder builder;
+  for (int z = 0; z < 3; ++z) builder.module({0, 0, z});
+  for (int k = 1; k <= 4; ++k) builder.module({k, 0, 2});
+  builder.module({20, 0, 0});
+  addWideFooting(builder);
+  return builder.build();
+}
+
 std::string latchName(const Weakest& weakest) {
   return "latch " + std::to_string(weakest.a.value) + "-" + std::to_string(weakest.b.value) + " ";
 }
@@ -131,12 +142,7 @@ TEST(LoadJudge, FindsTheSameOverloadedLatchAsTheWholeModelOfTheChangedWorld) {
 TEST(LoadJudge, AMobileHangingAtTheTipOfAnArmLoadsItsRootAsALongerArmWould) {
   // An arm of 4 on a column of 3, and a module alone on the ground far away; it hangs from the
   // arm's tip, one cell further out: the arm of 5, same ids but for the footing's.
-  WorldBuilder builder;
-  for (int z = 0; z < 3; ++z) builder.module({0, 0, z});
-  for (int k = 1; k <= 4; ++k) builder.module({k, 0, 2});
-  builder.module({20, 0, 0});
-  addWideFooting(builder);
-  const world::World world = builder.build();
+  const world::World world = armAndALoneModule();
   const Weakest longer = weakestOf(footedCantilever(3, 5), {});
   const std::array<geometry::Cell, 1> place = {geometry::Cell{5, 0, 2}};
   const Mover hanging{indexOf(world, {20, 0, 0}), indexOf(world, {4, 0, 2}), place, {}};
@@ -162,12 +168,7 @@ TEST(LoadJudge, APlaceOnTheWayIsWeighedAsACaseOfItsOwnWouldBe) {
   // The arm of 4 on a column of 3; the mover hangs from its tip above it (a cell), then on its way
   // half a spacing further out than any cell around (a place between): the judge weighs the places
   // between by superposition, and must find what the place solved alone gives.
-  WorldBuilder builder;
-  for (int z = 0; z < 3; ++z) builder.module({0, 0, z});
-  for (int k = 1; k <= 4; ++k) builder.module({k, 0, 2});
-  builder.module({20, 0, 0});
-  addWideFooting(builder);
-  const world::World world = builder.build();
+  const world::World world = armAndALoneModule();
   const LoadParameters defaults;
   const double spacing = 2.0 * defaults.radius;
   const uint32_t pivot = indexOf(world, {4, 0, 2});

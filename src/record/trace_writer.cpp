@@ -7,6 +7,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
+#include "catom3d/roll_path.h"
 #include "datom/linkage.h"
 #include "datom/motion_path.h"
 #include "datom/parts.h"
@@ -231,16 +232,14 @@ void TraceWriter::turnStarted(Time t, const sim::QuarterTurn& turn) {
 void TraceWriter::rollStarted(Time t, const sim::RollTurn& roll) {
   // One rigid turn about the normal of the triangle pivot, start, goal through its centre, which
   // takes the start to the goal (docs/catom3d.md, "In the simulator").
-  const Vec3 p = geometry::worldPosition(roll.pivotCell, spacing());
-  const Vec3 m = geometry::worldPosition(roll.from, spacing());
-  const Vec3 d = geometry::worldPosition(roll.goal, spacing());
-  const Vec3 axis = geometry::normalized(geometry::cross(m - p, d - p));
-  const Vec3 centre = (p + m + d) * (1.0 / 3.0);
+  const catom3d::RollAxis turn = catom3d::rollAxis(
+      geometry::worldPosition(roll.pivotCell, spacing()),
+      geometry::worldPosition(roll.from, spacing()), geometry::worldPosition(roll.goal, spacing()));
   fmt::format_to(std::back_inserter(text_),
                  "{{\"t\":{},\"turn\":{{\"m\":{},\"axis\":{},\"centre\":{},\"deg\":{},"
                  "\"d\":{}}}}}\n",
-                 seconds(t), roll.mobile.value, vec(axis), vec(centre), number(roll.degrees),
-                 seconds(roll.duration));
+                 seconds(t), roll.mobile.value, vec(turn.axis), vec(turn.centre),
+                 number(roll.degrees), seconds(roll.duration));
 }
 
 void TraceWriter::modulePlaced(Time t, const world::Module& module) {

@@ -230,21 +230,23 @@ std::optional<MoveRefusal> MotionExecutor::judgeLoads(uint32_t mobileIndex, uint
                                                       const motion::Motion& motion,
                                                       std::span<const world::BrokenLatch> broken) {
   // The mobile hangs on its pivot from the start of the motion to its end: judged at both ends
-  // of its way and at places along its two quarter turns (a Datom's; a 3D Catom's roll at its
-  // ends), with the motions in progress hanging as they are.
+  // of its way and at places along its two quarter turns, with the motions in progress hanging
+  // as they are.
   const std::vector<mechanics::Hanging> hanging = hangingNow();
   const std::array<geometry::Cell, 2> places = {motion.from, motion.goal};
   std::vector<geometry::Vec3> between;
+  const elastic::LoadParameters& parameters = loads_->parameters();
+  const double spacing = 2.0 * parameters.radius;
+  const geometry::Vec3 pivotCentre =
+      geometry::worldPosition(world_.modules()[pivotIndex].cell, spacing);
+  // Gravity is the Datom's alone (frontend refuses it for 3D Catoms): its two quarter turns.
   if (!model_->rolls()) {
-    const elastic::LoadParameters& parameters = loads_->parameters();
-    const double spacing = 2.0 * parameters.radius;
     // The parameters passed elastic::checkParameters, which makes the same Datom.
     const datom::Dimensions dimensions =
         *datom::dimensionsFor(parameters.radius, parameters.thickness);
-    between = datom::placesBetween(
-        dimensions, geometry::worldPosition(world_.modules()[pivotIndex].cell, spacing),
-        geometry::worldPosition(motion.from, spacing), quarterTurnsOf(table_.rule(motion.rule)),
-        kStepsPerQuarterTurn);
+    between =
+        datom::placesBetween(dimensions, pivotCentre, geometry::worldPosition(motion.from, spacing),
+                             quarterTurnsOf(table_.rule(motion.rule)), kStepsPerQuarterTurn);
   }
   const auto overload = loads_->judge(
       world_, {broken, hanging, mechanics::Mover{mobileIndex, pivotIndex, places, between}});
@@ -253,12 +255,13 @@ std::optional<MoveRefusal> MotionExecutor::judgeLoads(uint32_t mobileIndex, uint
   if (overload->moverBetween) {
     const int k = int(*overload->moverBetween) + 1;  // 1 .. 2 * steps - 1
     const int steps = kStepsPerQuarterTurn;
-    where = fmt::format(
-        ", with the mobile hanging on pivot {}, {}", world_.modules()[pivotIndex].id.value,
+    const std::string place =
         k == steps ? std::string("between its two quarter turns")
         : k < steps
             ? fmt::format("{:g} degrees into its first quarter turn", 90.0 * k / steps)
-            : fmt::format("{:g} degrees into its second quarter turn", 90.0 * (k - steps) / steps));
+            : fmt::format("{:g} degrees into its second quarter turn", 90.0 * (k - steps) / steps);
+    where = fmt::format(", with the mobile hanging on pivot {}, {}",
+                        world_.modules()[pivotIndex].id.value, place);
   } else if (overload->moverAt) {
     where = fmt::format(", with the mobile hanging on pivot {} {}",
                         world_.modules()[pivotIndex].id.value,

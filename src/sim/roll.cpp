@@ -2,6 +2,7 @@
 // rolling from the connector facing the start to the one facing the goal.
 #include <stdexcept>
 
+#include "catom3d/roll_path.h"
 #include "geometry/lattice.h"
 #include "sim/motion_executor.h"
 
@@ -61,8 +62,8 @@ void MotionExecutor::beginRoll(uint32_t index, const motion::Motion& motion, Cla
   announce_(&Observer::motionStarted, now,
             MotionStart{mobile.id, pivot.id, &started.plan, started.until, model_.get()});
   announce_(&Observer::rollStarted, now,
-            RollTurn{mobile.id, pivot.id, pivot.cell, motion.from, motion.goal, 120.0,
-                     started.until - now});
+            RollTurn{mobile.id, pivot.id, pivot.cell, motion.from, motion.goal,
+                     catom3d::kRollDegrees, started.until - now});
   agenda_.schedule(started.until, EventKind::kMotionEnd, index, slot);
 }
 

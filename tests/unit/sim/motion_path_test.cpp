@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "catom3d/roll_path.h"
+#include "catom3d/rolling.h"
 #include "datom/motion_path.h"
 #include "elastic/load_parameters.h"
 #include "geometry/lattice.h"
@@ -67,6 +69,21 @@ TEST(MotionPath, EachTurnKeepsTheMobileAtItsDistanceFromTheHingeAndMeetsOnTopOfT
     EXPECT_LT(geometry::norm(geometry::cross(out, geometry::axisVector(turns.up))), 1e-12)
         << rule.index;
     EXPECT_GT(geometry::dot(out, geometry::axisVector(turns.up)), 0) << rule.index;
+  }
+}
+
+TEST(MotionPath, EveryRollTurnsItsStartIntoItsGoalAboutTheTrianglesCentre) {
+  // A 3D Catom's roll as the trace gives it to the viewer: 120 degrees about the normal of pivot,
+  // start and goal, through their centre.
+  const catom3d::RollTable rolls;
+  const Vec3 pivot = geometry::worldPosition({2, 3, 4}, kSpacing);
+  for (const catom3d::Roll& roll : rolls.all()) {
+    const Vec3 start = pivot + geometry::worldOffset(roll.mobileOffset, kSpacing);
+    const Vec3 goal = pivot + geometry::worldOffset(roll.goalOffset, kSpacing);
+    const catom3d::RollAxis turn = catom3d::rollAxis(pivot, start, goal);
+    const Vec3 end = turn.centre + geometry::rotated(start - turn.centre, turn.axis,
+                                                     catom3d::kRollDegrees * std::acos(-1.0) / 180);
+    EXPECT_LT(distance(end, goal), 1e-12) << "roll " << roll.index;
   }
 }
 

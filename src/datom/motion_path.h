@@ -28,9 +28,10 @@ struct QuarterTurns {
   int secondSide = 0, secondAxis = 0;
 };
 
-// The mobile's centre along its way from `start`, its pivot's centre at `pivot`: `steps` - 1
-// places evenly spaced in angle inside each quarter turn, then the place between the turns, in
-// the order passed (2 * steps - 1 places; neither the start nor the goal). steps >= 1.
+// The mobile's centre along its way from `start`, its pivot's centre at `pivot`, in the order it
+// passes them: `steps` - 1 places evenly spaced in angle inside the first quarter turn, the place
+// between the turns, then `steps` - 1 inside the second (2 * steps - 1 places; neither the start
+// nor the goal). steps >= 1.
 std::vector<geometry::Vec3> placesBetween(const Dimensions& dimensions, const geometry::Vec3& pivot,
                                           const geometry::Vec3& start, const QuarterTurns& turns,
                                           int steps);

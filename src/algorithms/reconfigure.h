@@ -21,6 +21,9 @@
 //     or the engine refuses), moves, and lets them go. Any refusal, of a helper or of the engine
 //     (a reservation, connectivity), makes it let go of its helpers and try again after a random
 //     wait, from its own random stream; a goal that failed weighs more the next time.
+//   - A version's seeds are what its modules sense at its start: an open cell that a mover was
+//     passing through then is seeded by that mover when it has left it, at once, in the version
+//     of now; otherwise no version would ever seed it if it was the last open cell.
 //   - On an open cell, a mover asks the modules of the cells to fill before it whether they stay
 //     (a mover passing through looks the same to the senses), and settles when they all do.
 //   - A helper asked to compress for several motions with the same piston holds it until the last
@@ -177,6 +180,8 @@ class ReconfigureProgram : public Program {
   // The gradient (reconfigure_gradient.cpp).
   void adopt(Context& context, uint64_t version);
   void seedOpenCells(Context& context);
+  // After a motion out of `left`: seeds it if it is an open target cell now.
+  void seedLeftCell(Context& context, const geometry::Cell& left);
   void learn(Context& context, int direction, int32_t distance);
   void spread(Context& context, const geometry::Cell& cell, int32_t distance);
   void spreadFound(Context& context);

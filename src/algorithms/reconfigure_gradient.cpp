@@ -57,6 +57,17 @@ void ReconfigureProgram::seedOpenCells(Context& context) {
   }
 }
 
+void ReconfigureProgram::seedLeftCell(Context& context, const Cell& left) {
+  // The modules around `left` sensed this mover there at the version's start and did not seed it;
+  // no other fill may come to start a version that does (an arch's top: its last two cells stayed
+  // empty while two movers circled them for ever, one of the two cells never seeded). A seed only
+  // lowers distances, so the wave of improvement is right in the version of now.
+  const auto direction = geometry::directionOfOffset(left - context.cell());
+  if (direction && isOpen(context, left)) {
+    learn(context, *direction, kLayerBias * std::max(0, left.z));
+  }
+}
+
 void ReconfigureProgram::learn(Context& context, int direction, int32_t distance) {
   // As in the paper's gradient (gradient.cpp): a worklist over this module's neighbour cells.
   std::vector<std::pair<int, int32_t>> pending = {{direction, distance}};

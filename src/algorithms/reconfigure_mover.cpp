@@ -285,6 +285,7 @@ void ReconfigureProgram::onMotionEnded(Context& context, const MotionEnded& ende
   standing_ = chosenDistance_;
   standingVersion_ = chosenVersion_;
   arrivedAt_ = context.now();
+  if (chosen_) seedLeftCell(context, chosen_->from);
   idleRounds_ = 0;
   retryAfterRelease_ = false;
   releaseHelpers(context);

@@ -164,6 +164,23 @@ TEST_F(ActuatorsRun, AMoverWhoseHelpersAnswersAreLostTriesTheMotion) {
   EXPECT_TRUE(run["success"].get<bool>());
 }
 
+// A version of the gradient seeds the open cells its modules sense at its start. On the arch's
+// top with 1 cm SMA springs and electromagnetic latches, a mover stood on the second-last cell,
+// not yet open, and stepped off it just as the version began: the cell opened, but its neighbours
+// had sensed it occupied, and the cell beyond it looked open instead. No fill came to start
+// another version; two movers circled the two cells for twenty minutes until the stall detector
+// stopped the run. A mover that leaves a cell now seeds it if it is open.
+TEST_F(ActuatorsRun, AMoverSeedsTheOpenCellItLeaves) {
+  const std::string scene = std::string(DATOMSIM_SOURCE_DIR) + "/scenes/reshape-arch-hole2.json";
+  const Outcome outcome =
+      datomsim("run " + scene + " --program reconfigure --actuators sma-spring+electromagnetic" +
+               " --size 1cm --out " + path("arch.json"));
+  ASSERT_EQ(outcome.status, 0) << outcome.output.substr(0, 2000);
+  const nlohmann::json run = nlohmann::json::parse(readText(path("arch.json")));
+  EXPECT_TRUE(run["success"].get<bool>());
+  EXPECT_TRUE(run["missing"].empty()) << run["missing"];
+}
+
 // A mover gives a round up when its helpers have not answered within a few seconds, and a helper
 // lets its piston go when the motion it was held for has not come within a minute: both are waits
 // for pistons and motions, which a 10 cm module's latches (5.2 s a mechanical latching) and

@@ -9,6 +9,8 @@ packages=(
   libcli11-dev nlohmann-json3-dev libtinyxml2-dev libfmt-dev libcairo2-dev
   # The load model's sparse solvers (docs/mechanics.md).
   libeigen3-dev
+  # The studio's local server: Boost.Beast's HTTP and WebSocket over Boost.Asio (docs/studio.md).
+  libboost-dev
   clang-format cmake-format
   # The fuzz harnesses (scripts/fuzz.sh): Clang and its libFuzzer and sanitizer runtimes.
   clang libclang-rt-dev

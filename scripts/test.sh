@@ -58,4 +58,5 @@ if [[ "${DATOMSIM_SKIP_BROWSER:-0}" != 1 ]]; then
   npm --prefix viewer test
   node viewer/e2e/view.e2e.mjs --datomsim build/release/bin/datomsim --shots build/viewer-shots
   node viewer/e2e/colours.e2e.mjs --datomsim build/release/bin/datomsim --shots build/viewer-shots
+  node viewer/e2e/studio.e2e.mjs --datomsim build/release/bin/datomsim --shots build/viewer-shots
 fi

@@ -147,6 +147,7 @@ int main(int argc, char** argv, std::vector<ProgramEntry> programs) {
   app::addSweepCommand(app, reporter);
   app::addMeshCommand(app, reporter);
   app::addActuatorsCommand(app, reporter);
+  app::addStudioCommand(app);
   app::addCompletionCommand(app);
 
   // A first word that names no subcommand: say so, and which one was meant.

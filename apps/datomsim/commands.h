@@ -73,6 +73,7 @@ std::function<void(int, int)> videoProgress(const std::string& name, const Repor
 std::string describeVideo(const video::VideoSummary& made, const video::VideoRequest& request);
 // `completion bash|zsh`, from the whole command line `app` (add it last).
 void addCompletionCommand(CLI::App& app);
+void addStudioCommand(CLI::App& app);  // studio
 
 // Ends a subcommand's --help with one example of its use, run from the repository's root (the
 // test CommandLine.EverySubcommandsHelpEndsWithAnExampleThatRuns runs each).

@@ -63,71 +63,104 @@ ReshapeLimits limitsFor(ReshapeLimits limits, size_t modules, size_t movers, int
   return limits;
 }
 
-ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& table,
-                            const std::vector<Cell>& target, const algorithms::ProgramSet& programs,
-                            const ReshapeLimits& limits) {
-  ReshapeOutcome outcome;
-  simulator.startAll();
-  size_t filled = filledCount(simulator.world(), target);
-  Time lastFill = 0;
-  for (Time horizon = limits.slice;; horizon += limits.slice) {
-    const Status status = simulator.run(horizon);
-    if (!status.ok()) {
-      outcome.reason = status.error();
+ReshapeWatch::ReshapeWatch(sim::Simulator& simulator, const motion::RuleTable& table,
+                           std::vector<Cell> target, const algorithms::ProgramSet& programs,
+                           const ReshapeLimits& limits)
+    : simulator_(simulator),
+      table_(table),
+      target_(std::move(target)),
+      programs_(programs),
+      limits_(limits),
+      horizon_(limits.slice) {
+  simulator_.startAll();
+  filled_ = filledCount(simulator_.world(), target_);
+}
+
+bool ReshapeWatch::advance(Time until) {
+  while (!ended_ && horizon_ <= until) {
+    if (const Status status = simulator_.run(horizon_); !status.ok()) {
+      reason_ = status.error();
+      ended_ = true;
       break;
     }
-    const size_t now = filledCount(simulator.world(), target);
-    if (now == target.size()) {
-      outcome.success = true;
-      break;
-    }
-    if (now > filled) {
-      filled = now;
-      lastFill = simulator.now();
-    }
-    const std::vector<algorithms::ModuleState> movers = programs.unfinished();
-    if (horizon - lastFill >= limits.stall || horizon >= limits.timeout) {
-      const bool timedOut = horizon >= limits.timeout;
-      std::string waits;
-      for (size_t i = 0; i < std::min<size_t>(movers.size(), 8); ++i) {
-        waits += fmt::format("{}module {} {}", i ? "; " : "", movers[i].id.value, movers[i].state);
-      }
-      if (movers.size() > 8) waits += fmt::format("; and {} more", movers.size() - 8);
-      std::vector<Cell> missing;
-      for (const Cell& cell : target) {
-        if (!simulator.world().moduleAt(cell)) missing.push_back(cell);
-      }
-      std::sort(missing.begin(), missing.end());
-      const std::vector<Cell> lost =
-          unreachable(simulator.world(), table, missing, movers, simulator.options().rules);
-      if (!timedOut && lost.size() == missing.size()) {
-        outcome.reason = fmt::format("target cells no module can reach: {}", cellList(lost));
-      } else {
-        outcome.reason = fmt::format(
-            "{}: {} of {} target cells filled; {} modules did not settle ({}); empty: {}{}",
-            timedOut ? fmt::format("timeout after {:g} s of simulated time",
-                                   double(limits.timeout) / kSecond)
-                     : fmt::format("deadlock: no target cell filled for {:g} s",
-                                   double(limits.stall) / kSecond),
-            filled, target.size(), movers.size(), waits, cellList(missing),
-            lost.empty() ? "" : fmt::format("; of which no module can reach {}", cellList(lost)));
-      }
-      break;
+    endSlice();
+    if (!ended_) horizon_ += limits_.slice;
+  }
+  // Within a slice: the events up to `until`, counted at the slice's end as ever.
+  if (!ended_ && until < horizon_) {
+    if (const Status status = simulator_.run(until); !status.ok()) {
+      reason_ = status.error();
+      ended_ = true;
     }
   }
+  return ended_;
+}
 
+void ReshapeWatch::endSlice() {
+  const size_t now = filledCount(simulator_.world(), target_);
+  if (now == target_.size()) {
+    success_ = true;
+    ended_ = true;
+    return;
+  }
+  if (now > filled_) {
+    filled_ = now;
+    lastFill_ = simulator_.now();
+  }
+  const bool timedOut = horizon_ >= limits_.timeout;
+  if (horizon_ - lastFill_ < limits_.stall && !timedOut) return;
+  ended_ = true;
+  const std::vector<algorithms::ModuleState> movers = programs_.unfinished();
+  std::string waits;
+  for (size_t i = 0; i < std::min<size_t>(movers.size(), 8); ++i) {
+    waits += fmt::format("{}module {} {}", i ? "; " : "", movers[i].id.value, movers[i].state);
+  }
+  if (movers.size() > 8) waits += fmt::format("; and {} more", movers.size() - 8);
+  std::vector<Cell> missing;
+  for (const Cell& cell : target_) {
+    if (!simulator_.world().moduleAt(cell)) missing.push_back(cell);
+  }
+  std::sort(missing.begin(), missing.end());
+  const std::vector<Cell> lost =
+      unreachable(simulator_.world(), table_, missing, movers, simulator_.options().rules);
+  if (!timedOut && lost.size() == missing.size()) {
+    reason_ = fmt::format("target cells no module can reach: {}", cellList(lost));
+    return;
+  }
+  reason_ = fmt::format(
+      "{}: {} of {} target cells filled; {} modules did not settle ({}); empty: {}{}",
+      timedOut
+          ? fmt::format("timeout after {:g} s of simulated time", double(limits_.timeout) / kSecond)
+          : fmt::format("deadlock: no target cell filled for {:g} s",
+                        double(limits_.stall) / kSecond),
+      filled_, target_.size(), movers.size(), waits, cellList(missing),
+      lost.empty() ? "" : fmt::format("; of which no module can reach {}", cellList(lost)));
+}
+
+ReshapeOutcome ReshapeWatch::outcome() const {
+  ReshapeOutcome outcome;
+  outcome.success = success_;
+  outcome.reason = reason_;
   // What the ensemble looks like now.
-  const std::set<Cell> shape(target.begin(), target.end());
-  for (const world::Module& module : simulator.world().modules()) {
+  const std::set<Cell> shape(target_.begin(), target_.end());
+  for (const world::Module& module : simulator_.world().modules()) {
     outcome.final.push_back(module.cell);
     if (!shape.count(module.cell)) outcome.extra.push_back(module.cell);
   }
   std::sort(outcome.final.begin(), outcome.final.end());
   std::sort(outcome.extra.begin(), outcome.extra.end());
   for (const Cell& cell : shape) {
-    if (!simulator.world().moduleAt(cell)) outcome.missing.push_back(cell);
+    if (!simulator_.world().moduleAt(cell)) outcome.missing.push_back(cell);
   }
   return outcome;
+}
+
+ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& table,
+                            const std::vector<Cell>& target, const algorithms::ProgramSet& programs,
+                            const ReshapeLimits& limits) {
+  ReshapeWatch watch(simulator, table, target, programs, limits);
+  watch.advance(kLatestTime);
+  return watch.outcome();
 }
 
 }  // namespace datomsim::experiment

@@ -43,6 +43,40 @@ struct ReshapeOutcome {
   std::vector<geometry::Cell> extra;    // occupied cells outside the target
 };
 
+// A reconfiguration watched slice by slice until the target is built or the run stops. The
+// target is counted at the ends of slices only, so a watch advanced in steps (the studio's live
+// run) is the same run, event for event, as one advanced at once.
+class ReshapeWatch {
+ public:
+  // Starts every module's program. The simulator and the programs must outlive the watch.
+  ReshapeWatch(sim::Simulator& simulator, const motion::RuleTable& table,
+               std::vector<geometry::Cell> target, const algorithms::ProgramSet& programs,
+               const ReshapeLimits& limits);
+
+  // Runs the simulation up to `until` (simulated time), or until the watch ends: true once it
+  // has ended (built, stalled, timed out, or stopped by a violated invariant).
+  bool advance(Time until);
+  bool ended() const { return ended_; }
+  // The ensemble as it is now, and why the watch ended if it has.
+  ReshapeOutcome outcome() const;
+
+ private:
+  // The count at the end of a slice: ends the watch when the target is built or the run stalls.
+  void endSlice();
+
+  sim::Simulator& simulator_;
+  const motion::RuleTable& table_;
+  std::vector<geometry::Cell> target_;
+  const algorithms::ProgramSet& programs_;
+  ReshapeLimits limits_;
+  Time horizon_ = 0;  // the end of the slice being run
+  size_t filled_ = 0;
+  Time lastFill_ = 0;
+  bool ended_ = false;
+  bool success_ = false;
+  std::string reason_;
+};
+
 // Runs the simulation until the target is built or the run stops, and says which.
 ReshapeOutcome watchReshape(sim::Simulator& simulator, const motion::RuleTable& table,
                             const std::vector<geometry::Cell>& target,

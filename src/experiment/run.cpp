@@ -1,5 +1,7 @@
 #include "experiment/run.h"
 
+#include "experiment/live_run.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -230,8 +232,13 @@ bool isRunOutputKey(std::string_view key) {
   return std::find(kKeys.begin(), kKeys.end(), key) != kKeys.end();
 }
 
-Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
-                             const RunRequest& request) {
+LiveRun::LiveRun(const motion::RuleTable& table, const RunRequest& request)
+    : table_(table), request_(request) {}
+
+LiveRun::~LiveRun() = default;
+
+Result<std::unique_ptr<LiveRun>> LiveRun::start(world::World world, const motion::RuleTable& table,
+                                                const RunRequest& request) {
   const auto kind = algorithms::programKind(request.program, request.added);
   if (!kind.ok()) return Error{kind.error()};
   if (kind->entry) {
@@ -317,51 +324,56 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
       {request.goal, mobile, shape, request.parameters, waitsOf(request.simulation)}, world.size(),
       request.added);
   if (!made.ok()) return Error{made.error()};
-  // Shared from here on: the program's sections read after the run (RunEnd::keep) keep it.
-  std::shared_ptr<algorithms::ProgramSet> programs = std::move(*made);
 
+  std::unique_ptr<LiveRun> run(new LiveRun(table, request));
+  run->triggerTag_ = kind->mobileTrigger;
+  run->mobile_ = mobile;
+  // Shared from here on: the program's sections read after the run (RunEnd::keep) keep it.
+  run->programs_ = std::move(*made);
   sim::SimulationOptions options = request.simulation;
   options.mobile = mobile;
-  record::TraceWriter trace(request.simulation.moduleKind);
+  run->trace_ = std::make_unique<record::TraceWriter>(request.simulation.moduleKind);
+  record::TraceWriter& trace = *run->trace_;
   if (request.simulation.actuators) trace.actuators(*request.simulation.actuators);
   if (request.trace) trace.header(world, request.description, request.targets);
-  sim::Simulator simulator(std::move(world), table, options);
+  run->simulator_ = std::make_unique<sim::Simulator>(std::move(world), table, options);
+  sim::Simulator& simulator = *run->simulator_;
   if (request.trace) simulator.subscribe(&trace);
-  simulator.install(*programs);
-
-  RunResult result;
-  Status status = Ok{};
+  simulator.install(*run->programs_);
   if (kind->ending == algorithms::ProgramKind::Ending::kTargetBuilt) {
     // Watched slice by slice until the target is built or the run stops; a stopped run is a
     // result too.
-    result.reshape = watchReshape(simulator, table, request.targets.front(), *programs, limits);
+    run->watch_.emplace(simulator, table, request.targets.front(), *run->programs_, limits);
   } else {
     simulator.startAll();
-    status = simulator.run(request.until.value_or(INT64_MAX));
-    result.stoppedAtLimit = status.ok() && simulator.pending();
   }
-  if (status.ok() && kind->mobileTrigger) {
-    simulator.trigger(*mobile, *kind->mobileTrigger);
-    status = simulator.run();
-  }
-  // From here on a failure is a result: what the run did is kept, so that it can be looked at.
-  if (!status.ok()) result.failure = status.error();
-  if (!result.failure) result.failure = programs->failure();
+  return run;
+}
 
-  result.mobile = mobile;
+Result<RunResult> LiveRun::finish() {
+  sim::Simulator& simulator = *simulator_;
+  RunResult result;
+  if (watch_) result.reshape = watch_->outcome();
+  result.stoppedAtLimit = stoppedAtLimit_;
+  // From here on a failure is a result: what the run did is kept, so that it can be looked at.
+  if (!status_.ok()) result.failure = status_.error();
+  if (!result.failure) result.failure = programs_->failure();
+
+  result.mobile = mobile_;
   result.statistics = simulator.statistics();
   if (const mechanics::JudgeCounts* counts = simulator.loadCounts()) result.loadChecks = *counts;
   result.energy = simulator.energy();
-  if (request.trace) {
-    trace.footer(simulator.now(), summaryJson(result.statistics));
-    result.trace = trace.text();
+  if (request_.trace) {
+    trace_->footer(simulator.now(), summaryJson(result.statistics));
+    result.trace = trace_->text();
   }
+  phase_ = Phase::kOver;
   // The program reads its results on the ended world, which its sections may keep.
   const auto ended =
-      std::make_shared<const EndedRun>(EndedRun{programs, std::move(simulator).ended()});
+      std::make_shared<const EndedRun>(EndedRun{programs_, std::move(simulator).ended()});
   if (result.failure)
-    *result.failure += whyAnswersMissing(ended->world, programs->awaitedAnswers());
-  programs->report({modulesAtEnd(ended->world), result.stoppedAtLimit, ended}, result.report);
+    *result.failure += whyAnswersMissing(ended->world, programs_->awaitedAnswers());
+  programs_->report({modulesAtEnd(ended->world), result.stoppedAtLimit, ended}, result.report);
   std::vector<std::string_view> keys;
   for (const algorithms::RunReport::Section& section : result.report.sections()) {
     const bool twice = std::find(keys.begin(), keys.end(), section.key) != keys.end();
@@ -369,11 +381,19 @@ Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
       return Error{
           fmt::format("program {} reports \"{}\", a key the run's output uses itself; "
                       "report it under another name",
-                      request.program, section.key)};
+                      request_.program, section.key)};
     }
     keys.push_back(section.key);
   }
   return result;
+}
+
+Result<RunResult> runProgram(world::World world, const motion::RuleTable& table,
+                             const RunRequest& request) {
+  auto run = LiveRun::start(std::move(world), table, request);
+  if (!run.ok()) return Error{run.error()};
+  (*run)->advance(INT64_MAX);
+  return (*run)->finish();
 }
 
 }  // namespace datomsim::experiment

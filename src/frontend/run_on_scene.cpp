@@ -74,8 +74,8 @@ std::optional<sim::ActuatorModel> actuatorsOf(const RunArguments& args, world::M
 
 }  // namespace
 
-RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArguments& args,
-                     std::span<const ProgramEntry> added) {
+PreparedRun prepareRun(io::Scene scene, const std::string& sceneName, const RunArguments& args,
+                       std::span<const ProgramEntry> added) {
   experiment::RunRequest request;
   if (!args.module.empty()) {
     const auto kind = world::moduleKindNamed(args.module);
@@ -141,15 +141,25 @@ RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArg
     }
     request.parameters[pair.substr(0, equals)] = pair.substr(equals + 1);
   }
-  const motion::RuleTable table;
-  RunOutput output{*kind, unwrap(experiment::runProgram(std::move(scene.world), table, request)),
-                   std::nullopt};
+  return {*kind, std::move(request), std::move(scene.world)};
+}
+
+RunOutput runOutputOf(algorithms::ProgramKind kind, experiment::RunResult result) {
+  RunOutput output{std::move(kind), std::move(result), std::nullopt};
   if (output.result.reshape && !output.result.reshape->success) {
     output.failure = "the target was not built: " + output.result.reshape->reason;
   } else if (output.result.failure) {
     output.failure = output.result.failure;
   }
   return output;
+}
+
+RunOutput runOnScene(io::Scene scene, const std::string& sceneName, const RunArguments& args,
+                     std::span<const ProgramEntry> added) {
+  PreparedRun prepared = prepareRun(std::move(scene), sceneName, args, added);
+  const motion::RuleTable table;
+  return runOutputOf(prepared.kind, unwrap(experiment::runProgram(std::move(prepared.world), table,
+                                                                  prepared.request)));
 }
 
 }  // namespace datomsim::frontend

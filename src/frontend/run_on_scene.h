@@ -69,6 +69,20 @@ struct RunOutput {
   std::optional<std::string> failure;
 };
 
+// The run a `run` command asks for, checked as the command line checks it (UsageError where
+// `run` would refuse), ready for experiment::runProgram or experiment::LiveRun::start (the
+// studio's live run takes the same arguments, and refuses with the same messages).
+struct PreparedRun {
+  algorithms::ProgramKind kind;
+  experiment::RunRequest request;
+  world::World world;
+};
+PreparedRun prepareRun(io::Scene scene, const std::string& sceneName, const RunArguments& args,
+                       std::span<const ProgramEntry> added = {});
+
+// A run's result as `run` reports it: the target not built, or the run's own failure.
+RunOutput runOutputOf(algorithms::ProgramKind kind, experiment::RunResult result);
+
 // `run` on a scene in memory (`sceneName` goes into the description): the checks and the
 // messages of the command line, which throws UsageError where `run` would refuse. A run that
 // fails is a result with its failure, not an error. `added`: the programs a researcher's

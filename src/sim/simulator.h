@@ -125,6 +125,11 @@ class Simulator {
   Time now() const { return agenda_.now(); }
   // Whether events remain (a run stopped at its `until`).
   bool pending() const { return !agenda_.empty(); }
+  // The time of the next event, if any remains (a live run steps one event time at a time).
+  std::optional<Time> nextEventTime() const {
+    if (agenda_.empty()) return std::nullopt;
+    return agenda_.nextTime();
+  }
   const std::optional<Violation>& violation() const { return violation_; }
   const SimulationOptions& options() const { return options_; }
 

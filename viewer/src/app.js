@@ -58,6 +58,7 @@ export class App {
     this.root = root;
     this.trace = trace;
     this.timeline = new Timeline(trace);
+    this.loads = loads;
     this.colourings = new Colourings(trace, this.timeline, loads);
     this.kinematics = new Kinematics(trace.header);
     // A 3D Catom has no pistons: what tells of them (the panel's pistons, the connector colours of
@@ -78,6 +79,10 @@ export class App {
 
     this.shadows = opening.shadows ?? true;
 
+    // Every listener on the window ends with the app (dispose: the studio replaces its app as
+    // its run grows).
+    this.listening = new AbortController();
+    this.disposed = false;
     this.buildDom();
     this.view = new View3D(this.canvasHolder, this.timeline, this.kinematics, overlay, { shadows: this.shadows });
     this.view.setOverlayVisible(true);
@@ -87,7 +92,9 @@ export class App {
     this.installInput();
     this.seek(0);
     this.applyFragment(opening);
-    window.addEventListener('hashchange', () => this.applyFragment(parseFragment(window.location.hash)));
+    window.addEventListener('hashchange', () => this.applyFragment(parseFragment(window.location.hash)), {
+      signal: this.listening.signal,
+    });
     this.tick = this.tick.bind(this);
     requestAnimationFrame(this.tick);
   }
@@ -268,10 +275,15 @@ export class App {
       if (moved > 4) return; // a drag of the camera, not a click
       this.select(this.view.pick(event.clientX, event.clientY));
     });
-    window.addEventListener('resize', () => {
-      this.view.resize();
-      if (this.strip) this.strip.draw();
-    });
+    const signal = this.listening.signal;
+    window.addEventListener(
+      'resize',
+      () => {
+        this.view.resize();
+        if (this.strip) this.strip.draw();
+      },
+      { signal },
+    );
     window.addEventListener('keydown', (event) => {
       if (event.target instanceof HTMLInputElement && event.target.type !== 'range' && event.target.type !== 'checkbox') return;
       if (event.target instanceof HTMLSelectElement) return;
@@ -322,7 +334,44 @@ export class App {
           return;
       }
       event.preventDefault();
-    });
+    }, { signal });
+  }
+
+  // The same modules with more of their run (the studio's live run, as it grows): the bars are
+  // made again for the new duration; the 3D view, its camera and the selection stay.
+  extend(trace) {
+    const holder = this.canvasHolder;
+    this.trace = trace;
+    this.timeline = new Timeline(trace);
+    this.colourings = new Colourings(trace, this.timeline, this.loads);
+    this.duration = trace.duration;
+    this.view.timeline = this.timeline;
+    this.strip = null;
+    this.root.replaceChildren();
+    this.buildDom();
+    this.root.replaceChild(holder, this.canvasHolder);
+    this.canvasHolder = holder;
+    this.overlayToggle.wrapper.hidden = !this.overlay;
+    if (this.strip) this.strip.draw();
+  }
+
+  // Ends the app: its listeners on the window, its animation loop and its renderer.
+  dispose() {
+    this.disposed = true;
+    this.listening.abort();
+    this.view.renderer.dispose();
+  }
+
+  // Where the camera looks from, to keep it across apps (the studio's).
+  cameraState() {
+    return { position: this.view.camera.position.clone(), target: this.view.controls.target.clone() };
+  }
+
+  setCameraState(state) {
+    this.view.camera.position.copy(state.position);
+    this.view.controls.target.copy(state.target);
+    this.view.controls.update();
+    this.redraw();
   }
 
   // Shows the picture at trace time t (clamped to the trace), computed from the trace alone.
@@ -535,6 +584,7 @@ export class App {
   }
 
   tick(now) {
+    if (this.disposed) return;
     if (this.playing) {
       if (this.lastWall !== null) {
         const next = this.time + ((now - this.lastWall) / 1000) * this.speed;

@@ -1,10 +1,12 @@
 // Entry point of the bundle (dist/viewer.bundle.js). The page `datomsim view` writes carries the
 // trace in <script type="application/x-ndjson" id="datomsim-trace"> and, optionally, a distance
 // map in <script type="application/json" id="datomsim-overlay">; this script reads them and starts
-// the viewer. A page without a trace offers to open a trace file instead.
+// the viewer. A page without a trace offers to open a trace file instead; the studio's page
+// (datomsim-studio) starts the studio (studio.js).
 import { App } from './app.js';
 import { LoadsError } from './colouring.js';
 import { STYLE } from './style.js';
+import { startStudio } from './studio.js';
 import { TraceError, checkOverlay, parseTrace } from './trace.js';
 
 function embedded(id) {
@@ -77,6 +79,9 @@ function main() {
   const style = document.createElement('style');
   style.textContent = STYLE;
   document.head.appendChild(style);
+  // The studio's page (datomsim studio): the scene and its run come from the server.
+  const studio = document.getElementById('datomsim-studio');
+  if (studio) return startStudio(studio);
   let root = document.getElementById('datomsim-viewer');
   if (!root) {
     root = document.createElement('div');

@@ -214,6 +214,9 @@ TEST_F(CommandLine, EverySubcommandsHelpEndsWithAnExampleThatRuns) {
     std::string arguments = example[1];
     // The demo's videos are the recorder's, which VideoCommand.* tests; here the rest of it runs.
     if (subcommand == "demo") arguments += " --no-video";
+    // The studio serves until it is stopped (StudioServer.* tests that): here it answers the
+    // requests of an empty file, which checks its scene and its viewer's script.
+    if (subcommand == "studio") arguments += " --requests /dev/null";
     // A redirection into the user's home goes to the test's folder instead.
     if (const size_t into = arguments.find(" > "); into != std::string::npos) {
       arguments = arguments.substr(0, into) + " > " + path("redirected");

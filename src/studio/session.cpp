@@ -1,0 +1,302 @@
+#include "studio/session.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <utility>
+
+#include "algorithms/registry.h"
+#include "frontend/arguments.h"
+#include "frontend/run_json.h"
+#include "frontend/usage_error.h"
+#include "geometry/cell_text.h"
+#include "io/json_scene.h"
+#include "record/trace_writer.h"
+
+namespace datomsim::studio {
+
+using frontend::UsageError;
+using geometry::Cell;
+using Json = nlohmann::json;
+
+namespace {
+
+constexpr std::string_view kOperations = "scene, add, remove, undo, redo, run, advance, stop";
+
+// The run's arguments a request may give, by the command line's names (without the dashes).
+constexpr std::string_view kRunKeys =
+    "program, goal, start, seed, param, rules, attachment, connectivity, max-motions, delay-ms, "
+    "jitter-ms, until, timeout, gravity";
+
+std::string typeName(const Json& value) {
+  return value.is_string() ? "text" : std::string(value.type_name());
+}
+
+const std::string& text(const Json& request, const char* key) {
+  const Json& value = request.at(key);
+  if (!value.is_string()) {
+    throw UsageError(fmt::format("\"{}\" must be text, got {}", key, typeName(value)));
+  }
+  return value.get_ref<const std::string&>();
+}
+
+double number(const Json& request, const char* key) {
+  const Json& value = request.at(key);
+  if (!value.is_number()) {
+    throw UsageError(fmt::format("\"{}\" must be a number, got {}", key, typeName(value)));
+  }
+  return value.get<double>();
+}
+
+// A cell as the command line types it ("x,y,z") or as three integers.
+Cell cellOf(const Json& request, const char* key) {
+  if (!request.contains(key)) throw UsageError(fmt::format("\"{}\": a cell is needed", key));
+  const Json& value = request.at(key);
+  if (value.is_string()) return frontend::parseCell(key, value.get<std::string>());
+  if (value.is_array() && value.size() == 3) {
+    std::string typed;
+    for (const Json& coordinate : value) {
+      if (!coordinate.is_number_integer()) break;
+      typed += (typed.empty() ? "" : ",") + std::to_string(coordinate.get<int64_t>());
+    }
+    if (typed.size() && value[2].is_number_integer()) return frontend::parseCell(key, typed);
+  }
+  throw UsageError(fmt::format("\"{}\" must be a cell, \"x,y,z\" or [x, y, z] in integers, got {}",
+                               key, value.dump()));
+}
+
+// A reply's text: its values, and the trace records (already JSON) spliced in as they are.
+std::string replyText(Json reply, const std::string& records) {
+  reply["ok"] = true;
+  std::string out = reply.dump();
+  if (!records.empty()) {
+    out.pop_back();
+    out += ",\"records\":" + records + "}";
+  }
+  return out;
+}
+
+}  // namespace
+
+Session::Session(io::Scene scene, std::string sceneName)
+    : scene_(std::move(scene)), sceneName_(std::move(sceneName)) {}
+
+Session::~Session() = default;
+
+std::string Session::handle(std::string_view request) {
+  try {
+    const Json parsed = Json::parse(request, nullptr, /*allow_exceptions=*/false);
+    if (parsed.is_discarded()) throw UsageError("the request is not JSON");
+    if (!parsed.is_object()) throw UsageError("the request must be a JSON object");
+    if (!parsed.contains("op")) throw UsageError("the request has no \"op\"");
+    const std::string& op = text(parsed, "op");
+    if (op == "scene") return replyText(describe(), "");
+    if (op == "add" || op == "remove") return replyText(edit(parsed, op == "add"), "");
+    if (op == "undo") return replyText(undo(undo_, redo_), "");
+    if (op == "redo") return replyText(undo(redo_, undo_), "");
+    if (op == "run") {
+      Json reply = startRun(parsed);
+      return replyText(std::move(reply), newRecords());
+    }
+    if (op == "advance") {
+      Json reply = advance(parsed);
+      return replyText(std::move(reply), newRecords());
+    }
+    if (op == "stop") return replyText(stop(), "");
+    throw UsageError(fmt::format("unknown op \"{}\": one of {}", op, kOperations));
+  } catch (const UsageError& error) {
+    return Json{{"ok", false}, {"error", error.what()}}.dump();
+  } catch (const std::exception& error) {
+    // Whatever else a hostile request could raise is an error reply too: the studio answers on.
+    return Json{{"ok", false}, {"error", std::string("cannot answer: ") + error.what()}}.dump();
+  }
+}
+
+Json Session::describe() const {
+  Json reply;
+  reply["scene"] = Json::parse(io::toJson(scene_));
+  // The viewer draws a scene at rest from a trace's header alone.
+  record::TraceWriter header(scene_.moduleKind);
+  std::vector<std::vector<Cell>> targets;
+  for (const target::Target& target : scene_.targets) {
+    auto cells = target.cells();
+    if (cells.ok()) targets.push_back(std::move(*cells));
+  }
+  header.header(scene_.world, sceneName_, targets);
+  reply["trace_header"] = header.text();
+  reply["running"] = running();
+  reply["can_undo"] = !undo_.empty();
+  reply["can_redo"] = !redo_.empty();
+  Json names = Json::array();
+  for (const algorithms::ProgramKind& kind : algorithms::programs()) names.push_back(kind.name);
+  reply["programs"] = std::move(names);
+  return reply;
+}
+
+Json Session::edit(const Json& request, bool add) {
+  if (running()) throw UsageError("the scene cannot change during a run: stop it first");
+  const Cell cell = cellOf(request, "cell");
+  world::World& world = scene_.world;
+  if (!world.isInside(cell)) {
+    throw UsageError("cell " + geometry::toString(cell) + " " + world.bounds().whyOutside(cell));
+  }
+  io::Scene before = scene_;
+  Json reply;
+  if (add) {
+    if (const world::Module* there = world.moduleAt(cell)) {
+      throw UsageError(fmt::format("cell {} holds module {} already", geometry::toString(cell),
+                                   there->id.value));
+    }
+    world::Module module;
+    module.id = world.nextFreeId();
+    module.cell = cell;
+    frontend::check(world.add(module));
+    reply["id"] = module.id.value;
+  } else {
+    const world::Module* there = world.moduleAt(cell);
+    if (!there) throw UsageError("cell " + geometry::toString(cell) + " holds no module");
+    reply["id"] = there->id.value;
+    frontend::check(world.remove(there->id));
+  }
+  undo_.push_back(std::move(before));
+  redo_.clear();
+  reply["modules"] = world.size();
+  return reply;
+}
+
+Json Session::undo(std::vector<io::Scene>& from, std::vector<io::Scene>& to) {
+  if (running()) throw UsageError("the scene cannot change during a run: stop it first");
+  if (from.empty()) throw UsageError(&from == &undo_ ? "nothing to undo" : "nothing to redo");
+  to.push_back(std::move(scene_));
+  scene_ = std::move(from.back());
+  from.pop_back();
+  Json reply;
+  reply["modules"] = scene_.world.size();
+  return reply;
+}
+
+Json Session::startRun(const Json& request) {
+  if (running()) throw UsageError("a run is in progress: stop it first");
+  frontend::RunArguments args;
+  args.wantTrace = true;
+  for (const auto& [key, value] : request.items()) {
+    if (key == "op") continue;
+    if (key == "program") {
+      args.program = text(request, "program");
+    } else if (key == "goal") {
+      args.goal = geometry::toString(cellOf(request, "goal"));
+    } else if (key == "start") {
+      args.start = geometry::toString(cellOf(request, "start"));
+    } else if (key == "seed") {
+      args.seed =
+          value.is_number_integer() ? std::to_string(value.get<int64_t>()) : text(request, "seed");
+    } else if (key == "param") {
+      if (!value.is_object()) {
+        throw UsageError("\"param\" must be an object of KEY: VALUE, got " + typeName(value));
+      }
+      for (const auto& [name, given] : value.items()) {
+        if (!given.is_string()) {
+          throw UsageError(fmt::format("param {} must be text, got {}", name, typeName(given)));
+        }
+        args.parameters.push_back(name + "=" + given.get<std::string>());
+      }
+    } else if (key == "rules") {
+      args.rules.rules = text(request, "rules");
+    } else if (key == "attachment") {
+      args.rules.attachment = text(request, "attachment");
+    } else if (key == "connectivity") {
+      args.rules.connectivity = text(request, "connectivity");
+      args.connectivityGiven = true;
+    } else if (key == "max-motions") {
+      if (!value.is_number_integer()) {
+        throw UsageError("\"max-motions\" must be an integer, got " + value.dump());
+      }
+      args.maxMotions = value.get<int64_t>();
+    } else if (key == "delay-ms") {
+      args.delayMs = number(request, "delay-ms");
+    } else if (key == "jitter-ms") {
+      args.jitterMs = number(request, "jitter-ms");
+    } else if (key == "until") {
+      args.untilS = number(request, "until");
+    } else if (key == "timeout") {
+      args.timeoutS = number(request, "timeout");
+    } else if (key == "gravity") {
+      args.gravity = text(request, "gravity");
+    } else {
+      throw UsageError(fmt::format("unknown run argument \"{}\": one of {}", key, kRunKeys));
+    }
+  }
+  if (args.program.empty()) throw UsageError("run: \"program\" is needed");
+  frontend::PreparedRun prepared = frontend::prepareRun(scene_, sceneName_, args);
+  auto started = experiment::LiveRun::start(std::move(prepared.world), table_, prepared.request);
+  if (!started.ok()) throw UsageError(started.error());
+  run_ = std::move(*started);
+  runKind_ = prepared.kind;
+  runProgram_ = args.program;
+  traceSent_ = 0;
+  clock_ = 0;
+  Json reply;
+  reply["time"] = 0.0;
+  reply["over"] = false;
+  return reply;
+}
+
+Json Session::advance(const Json& request) {
+  if (!running()) throw UsageError("no run in progress: start one with \"run\"");
+  Time until = 0;
+  if (request.contains("until")) {
+    until = frontend::parseSeconds("until", number(request, "until"));
+  } else if (request.contains("by")) {
+    const Time by = frontend::parseSeconds("by", number(request, "by"));
+    until = std::min(kLatestTime, clock_ + by);
+  } else if (request.contains("to") && request.at("to") == "next") {
+    // The next event's time: every event of that time runs.
+    until = std::max(clock_, run_->nextEventTime().value_or(clock_));
+  } else {
+    throw UsageError("advance: give \"until\" or \"by\" (seconds), or \"to\": \"next\"");
+  }
+  clock_ = std::max(clock_, until);
+  const bool over = run_->advance(clock_);
+  Json reply;
+  reply["time"] = double(clock_) / kSecond;
+  reply["event_time"] = double(run_->now()) / kSecond;
+  reply["over"] = over;
+  const std::optional<Time> next = run_->nextEventTime();
+  reply["next"] = next ? Json(double(*next) / kSecond) : Json(nullptr);
+  reply["events"] = run_->statistics().events();
+  reply["motions"] = run_->statistics().motions;
+  return reply;
+}
+
+Json Session::stop() {
+  if (!running()) throw UsageError("no run in progress");
+  std::unique_ptr<experiment::LiveRun> run = std::move(run_);
+  auto finished = run->finish();
+  if (!finished.ok()) throw UsageError(finished.error());
+  const frontend::RunOutput output = frontend::runOutputOf(*runKind_, std::move(*finished));
+  Json reply;
+  reply["result"] = Json::parse(frontend::runJson(runProgram_, output.result));
+  if (output.failure) reply["failure"] = *output.failure;
+  // The trace's last records, its footer among them: the page has the whole run.
+  reply["trace_tail"] =
+      output.result.trace.substr(std::min(traceSent_, output.result.trace.size()));
+  runKind_.reset();
+  return reply;
+}
+
+std::string Session::newRecords() {
+  const std::string& trace = run_->traceSoFar();
+  std::string records = "[";
+  size_t from = traceSent_;
+  while (from < trace.size()) {
+    const size_t end = trace.find('\n', from);
+    if (end == std::string::npos) break;
+    if (records.size() > 1) records += ',';
+    records.append(trace, from, end - from);
+    from = end + 1;
+  }
+  traceSent_ = from;
+  return records + "]";
+}
+
+}  // namespace datomsim::studio

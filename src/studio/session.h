@@ -1,0 +1,65 @@
+// One studio's state, driven by requests from its pages (docs/studio.md, "Protocol"): the scene
+// being edited with its history, and the run in progress, advanced as the page asks.
+//
+// A request is a JSON object naming its operation ("op"); every request gets a reply, a JSON
+// object with "ok": true and the operation's values, or "ok": false and an "error" that names the
+// field or the value at fault. A request that is refused changes nothing. The run takes the
+// command line's arguments by their names (`frontend::RunArguments`) and refuses with the
+// command line's messages; it is experiment::LiveRun, the same run as `datomsim run`, byte for
+// byte, however it is stepped.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "experiment/live_run.h"
+#include "frontend/run_on_scene.h"
+#include "io/scene.h"
+#include "motion/rule_table.h"
+
+namespace datomsim::studio {
+
+class Session {
+ public:
+  // The scene the studio opens (`sceneName` for the run's description).
+  Session(io::Scene scene, std::string sceneName);
+  ~Session();
+
+  // One request, as text; its reply, as text (always one JSON object).
+  std::string handle(std::string_view request);
+
+  const io::Scene& scene() const { return scene_; }
+  bool running() const { return run_ != nullptr; }
+
+ private:
+  using Json = nlohmann::json;
+  // Each operation: its reply's values, or a frontend::UsageError naming what is wrong.
+  Json describe() const;
+  Json edit(const Json& request, bool add);
+  Json undo(std::vector<io::Scene>& from, std::vector<io::Scene>& to);
+  Json startRun(const Json& request);
+  Json advance(const Json& request);
+  Json stop();
+  // The trace records the pages have not had yet, as one JSON array's text.
+  std::string newRecords();
+
+  io::Scene scene_;
+  std::string sceneName_;
+  // The scenes before the edits that can be undone, and before those undone.
+  std::vector<io::Scene> undo_, redo_;
+  const motion::RuleTable table_;
+  // The run in progress, its program's kind and name, and how much of its trace was sent.
+  std::unique_ptr<experiment::LiveRun> run_;
+  std::optional<algorithms::ProgramKind> runKind_;
+  std::string runProgram_;
+  size_t traceSent_ = 0;
+  // The time the run has been advanced to: an advance "by" counts from it (the last event may
+  // lie well before it, in the middle of a motion).
+  Time clock_ = 0;
+};
+
+}  // namespace datomsim::studio

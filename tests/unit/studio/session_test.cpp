@@ -1,0 +1,152 @@
+// The studio's protocol (docs/studio.md, "Protocol"): every request gets a reply; a bad one is
+// refused naming what is wrong and changes nothing; edits can be undone and redone; a run
+// started, advanced in steps and stopped is `datomsim run`'s run, byte for byte.
+#include "studio/session.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "frontend/run_json.h"
+#include "frontend/run_on_scene.h"
+#include "geometry/cell_text.h"
+#include "io/json_scene.h"
+#include "io/scene_file.h"
+
+namespace datomsim::studio {
+namespace {
+
+using nlohmann::json;
+
+io::Scene arch() {
+  return *io::readScene(std::string(DATOMSIM_SOURCE_DIR) + "/scenes/paper-arch-hole1.json");
+}
+
+json ask(Session& session, const json& request) {
+  return json::parse(session.handle(request.dump()));
+}
+
+// Refused with a message holding `expected`, and the scene as it was.
+void refused(Session& session, const std::string& request, const std::string& expected) {
+  const std::string before = io::toJson(session.scene());
+  const json reply = json::parse(session.handle(request));
+  EXPECT_FALSE(reply.at("ok").get<bool>()) << request;
+  const std::string error = reply.value("error", "");
+  EXPECT_NE(error.find(expected), std::string::npos)
+      << request << "\nexpected: " << expected << "\ngot: " << error;
+  EXPECT_EQ(io::toJson(session.scene()), before) << request;
+}
+
+TEST(StudioSession, ABadRequestIsRefusedNamingWhatIsWrongAndChangesNothing) {
+  Session session(arch(), "arch");
+  refused(session, "{\"op\": \"add\", \"cell\": [1, 2", "not JSON");
+  refused(session, "[1, 2, 3]", "must be a JSON object");
+  refused(session, std::string(200000, '[') + std::string(200000, ']'), "must be a JSON object");
+  refused(session, "{\"op\": \"advance\", \"by\": 1e300}", "no run in progress");
+  refused(session, "{\"cell\": [1, 2, 3]}", "no \"op\"");
+  refused(session, "{\"op\": 7}", "\"op\" must be text, got number");
+  refused(session, "{\"op\": \"explode\"}", "unknown op \"explode\": one of scene, add");
+  refused(session, "{\"op\": \"add\"}", "\"cell\": a cell is needed");
+  refused(session, "{\"op\": \"add\", \"cell\": [1.5, 2, 3]}", "must be a cell");
+  refused(session, "{\"op\": \"add\", \"cell\": \"400,0,0\"}", "cell 400,0,0");
+  const geometry::Cell taken = session.scene().world.modules().front().cell;
+  refused(session, "{\"op\": \"add\", \"cell\": \"" + geometry::toString(taken) + "\"}",
+          "holds module");
+  refused(session, "{\"op\": \"remove\", \"cell\": [0, 0, 1]}", "holds no module");
+  refused(session, "{\"op\": \"undo\"}", "nothing to undo");
+  refused(session, "{\"op\": \"advance\", \"by\": 1}", "no run in progress");
+  refused(session, "{\"op\": \"run\", \"program\": \"follow-gradien\"}",
+          "--program: follow-gradien not in {gradient,follow-gradient");
+  refused(session, "{\"op\": \"run\", \"program\": \"follow-gradient\", \"goal\": \"6,5,2\"}",
+          "needs a start cell");
+  refused(session, "{\"op\": \"run\", \"program\": \"gradient\", \"tiemout\": 3}",
+          "unknown run argument \"tiemout\"");
+  EXPECT_FALSE(session.running());
+}
+
+TEST(StudioSession, AnEditIsUndoneAndRedone) {
+  Session session(arch(), "arch");
+  const std::string original = io::toJson(session.scene());
+  const size_t modules = session.scene().world.size();
+  const json added = ask(session, {{"op", "add"}, {"cell", "0,0,1"}});
+  ASSERT_TRUE(added.at("ok").get<bool>()) << added;
+  EXPECT_EQ(added.at("modules").get<size_t>(), modules + 1);
+  ASSERT_NE(session.scene().world.moduleAt({0, 0, 1}), nullptr);
+  const std::string edited = io::toJson(session.scene());
+
+  EXPECT_TRUE(ask(session, {{"op", "undo"}}).at("ok").get<bool>());
+  EXPECT_EQ(io::toJson(session.scene()), original);
+  EXPECT_TRUE(ask(session, {{"op", "redo"}}).at("ok").get<bool>());
+  EXPECT_EQ(io::toJson(session.scene()), edited);
+
+  const json removed = ask(session, {{"op", "remove"}, {"cell", {0, 0, 1}}});
+  ASSERT_TRUE(removed.at("ok").get<bool>()) << removed;
+  EXPECT_EQ(removed.at("id"), added.at("id"));
+  EXPECT_EQ(io::toJson(session.scene()), original);
+  refused(session, "{\"op\": \"redo\"}", "nothing to redo");
+  const json scene = ask(session, {{"op", "scene"}});
+  EXPECT_TRUE(scene.at("can_undo").get<bool>());
+  EXPECT_EQ(scene.at("scene").at("modules").size(), modules);
+}
+
+// The run as the command line runs it, with the same arguments.
+frontend::RunOutput commandLineRun() {
+  frontend::RunArguments args;
+  args.program = "follow-gradient";
+  args.goal = "6,5,2";
+  args.start = "0,0,2";
+  args.seed = "3";
+  args.wantTrace = true;
+  return frontend::runOnScene(arch(), "arch", args);
+}
+
+TEST(StudioSession, ARunSteppedInTheStudioIsTheCommandLinesRun) {
+  Session session(arch(), "arch");
+  const json started = ask(session, {{"op", "run"},
+                                     {"program", "follow-gradient"},
+                                     {"goal", {6, 5, 2}},
+                                     {"start", "0,0,2"},
+                                     {"seed", 3}});
+  ASSERT_TRUE(started.at("ok").get<bool>()) << started;
+  std::string trace;
+  for (const json& record : started.at("records")) trace += record.dump() + "\n";
+  ASSERT_FALSE(trace.empty()) << "the header comes with the run";
+  // Editing is refused during the run, and so is a second run.
+  refused(session, "{\"op\": \"add\", \"cell\": \"0,0,1\"}", "during a run");
+  refused(session, "{\"op\": \"run\", \"program\": \"gradient\"}", "a run is in progress");
+
+  int steps = 0;
+  for (bool over = false; !over; ++steps) {
+    // One event time at a time at first, then half a second at a time.
+    const json step =
+        steps < 40 ? json{{"op", "advance"}, {"to", "next"}} : json{{"op", "advance"}, {"by", 0.5}};
+    const json reply = ask(session, step);
+    ASSERT_TRUE(reply.at("ok").get<bool>()) << reply;
+    for (const json& record : reply.at("records")) trace += record.dump() + "\n";
+    over = reply.at("over").get<bool>();
+    ASSERT_LT(steps, 100000);
+  }
+  const json stopped = ask(session, {{"op", "stop"}});
+  ASSERT_TRUE(stopped.at("ok").get<bool>()) << stopped;
+  trace += stopped.at("trace_tail").get<std::string>();
+  EXPECT_FALSE(session.running());
+
+  const frontend::RunOutput expected = commandLineRun();
+  // Records went through a JSON parser and back: compared as JSON, line by line.
+  std::istringstream got(trace), want(expected.result.trace);
+  std::string a, b;
+  size_t lines = 0;
+  while (std::getline(want, b)) {
+    ASSERT_TRUE(std::getline(got, a)) << "the studio's trace ends early, at line " << lines;
+    EXPECT_EQ(json::parse(a), json::parse(b)) << "line " << lines;
+    ++lines;
+  }
+  EXPECT_FALSE(std::getline(got, a)) << "the studio's trace is longer";
+  EXPECT_EQ(stopped.at("result").at("motions"),
+            json::parse(frontend::runJson("follow-gradient", expected.result))["motions"]);
+}
+
+}  // namespace
+}  // namespace datomsim::studio

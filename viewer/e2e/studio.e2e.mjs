@@ -1,0 +1,114 @@
+// End-to-end checks of the studio (docs/studio.md): `datomsim studio` started on a free port, its
+// page opened in headless Chromium, driven by clicks as a person would.
+//
+//   node viewer/e2e/studio.e2e.mjs --datomsim build/release/bin/datomsim [--shots DIR]
+//
+// Prints one line per check and `N passed, M failed`; exits non-zero on a failure.
+import { execFileSync, spawn } from 'node:child_process';
+import { join, resolve } from 'node:path';
+import { launchBrowser } from './browser.mjs';
+import { assert, check, commonOptions, finish, repository } from './harness.mjs';
+
+const { datomsim, shots } = commonOptions();
+if (!datomsim) {
+  console.error('usage: node viewer/e2e/studio.e2e.mjs --datomsim PATH [--shots DIR]');
+  process.exit(2);
+}
+
+const scene = join('scenes', 'paper-arch-hole1.json');
+
+// The studio on a free port: its address, from the line it prints.
+function startStudio() {
+  const child = spawn(resolve(datomsim), ['studio', scene, '--port', '0'], {
+    cwd: repository,
+    stdio: ['ignore', 'pipe', 'pipe'],
+  });
+  return new Promise((resolveStart, reject) => {
+    let out = '';
+    child.stdout.on('data', (chunk) => {
+      out += chunk;
+      const found = out.match(/studio at (http:\/\/\S+)/);
+      if (found) resolveStart({ child, url: found[1] });
+    });
+    child.on('exit', (code) => reject(new Error(`datomsim studio ended (${code}): ${out}`)));
+  });
+}
+
+// What the command line says of the same run.
+function commandLineRun() {
+  const out = execFileSync(
+    resolve(datomsim),
+    ['run', scene, '--program', 'follow-gradient', '--goal', '6,5,2', '--start', '0,0,2'],
+    { cwd: repository, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] },
+  );
+  return JSON.parse(out);
+}
+
+const { child, url } = await startStudio();
+const { context, close } = await launchBrowser();
+try {
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (error) => errors.push(String(error)));
+  const state = () => page.evaluate(() => window.datomsimStudio.state());
+  const waitFor = (predicate) =>
+    page.waitForFunction(predicate, null, { timeout: 30000, polling: 100 });
+
+  await check('the page opens with the scene', async () => {
+    await page.goto(url);
+    await waitFor(() => window.datomsimStudio && window.datomsimStudio.state().modules > 0);
+    const s = await state();
+    assert(s.modules === 131, `modules ${s.modules}`);
+    await page.screenshot({ path: join(shots, 'studio-scene.png') });
+  });
+
+  await check('a module added by its cell, then undone', async () => {
+    await page.fill('#ds-cell', '0,0,1');
+    await page.click('#ds-add');
+    await waitFor(() => window.datomsimStudio.state().modules === 132);
+    await page.click('#ds-undo');
+    await waitFor(() => window.datomsimStudio.state().modules === 131);
+  });
+
+  await check('a bad cell is refused with the message, and changes nothing', async () => {
+    await page.fill('#ds-cell', '400,0,0');
+    await page.click('#ds-add');
+    await waitFor(() => window.datomsimStudio.state().error !== null);
+    const s = await state();
+    assert(s.error.includes('400,0,0'), s.error);
+    assert(s.modules === 131, `modules ${s.modules}`);
+  });
+
+  await check('follow-gradient runs live: stepped, played, stopped, as the command line runs it', async () => {
+    await page.selectOption('#ds-program', 'follow-gradient');
+    await page.fill('#ds-goal', '6,5,2');
+    await page.fill('#ds-start', '0,0,2');
+    await page.click('#ds-run');
+    await waitFor(() => window.datomsimStudio.state().running);
+    for (let k = 0; k < 3; ++k) {
+      const before = (await state()).events;
+      await page.click('#ds-step');
+      await waitFor((n) => window.datomsimStudio.state().events > n, before);
+    }
+    const stepped = await state();
+    assert(stepped.time > 0 && !stepped.over, JSON.stringify(stepped));
+    await page.selectOption('#ds-speed', '0');
+    await page.click('#ds-play');
+    // Over, the run ends by itself and shows its result.
+    await waitFor(() => window.datomsimStudio.state().result !== null);
+    await page.screenshot({ path: join(shots, 'studio-run.png') });
+    const s = await state();
+    const expected = commandLineRun();
+    assert(s.result.motions === expected.motions, `motions ${s.result.motions} against ${expected.motions}`);
+    assert(s.result.events === expected.events, `events ${s.result.events} against ${expected.events}`);
+    assert(JSON.stringify(s.result.path) === JSON.stringify(expected.path), 'the path differs');
+  });
+
+  await check('the page raised no error', async () => {
+    assert(errors.length === 0, errors.join('\n'));
+  });
+} finally {
+  await close();
+  child.kill('SIGINT');
+}
+finish();

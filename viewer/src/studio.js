@@ -1,0 +1,226 @@
+// The studio's page (docs/studio.md): the scene and its live run come from the server over its
+// socket, the viewer (app.js) draws them, and the bar above edits the scene, runs a program,
+// steps, plays and stops it. Every request is answered; a refused one shows its error and changes
+// nothing.
+import { App } from './app.js';
+import { parseTrace } from './trace.js';
+
+const STUDIO_STYLE = `
+#datomsim-studio .ds-bar { position: fixed; top: 0; left: 0; right: 0; height: 64px;
+  display: flex; flex-wrap: wrap; align-items: center; gap: 4px 8px; padding: 4px 8px;
+  box-sizing: border-box; background: #1f2430; color: #e8ecf2; font: 13px system-ui, sans-serif; }
+#datomsim-studio .ds-bar input { width: 64px; }
+#datomsim-studio .ds-bar .ds-group { display: flex; align-items: center; gap: 4px;
+  padding-right: 8px; border-right: 1px solid #3a4150; }
+#datomsim-studio .ds-status { flex: 1 1 100%; white-space: nowrap; overflow: hidden;
+  text-overflow: ellipsis; }
+#datomsim-studio .ds-status.ds-error { color: #ff8a80; }
+#datomsim-viewer { top: 64px; }
+`;
+
+function element(tag, properties = {}, ...children) {
+  const node = Object.assign(document.createElement(tag), properties);
+  node.append(...children);
+  return node;
+}
+
+function labelled(text, input) {
+  return element('label', {}, `${text} `, input);
+}
+
+export function startStudio(root) {
+  const style = element('style', { textContent: STUDIO_STYLE });
+  document.head.appendChild(style);
+
+  const program = element('select', { id: 'ds-program' });
+  const goal = element('input', { id: 'ds-goal', placeholder: 'x,y,z' });
+  const start = element('input', { id: 'ds-start', placeholder: 'x,y,z' });
+  const seed = element('input', { id: 'ds-seed', value: '1' });
+  const runButton = element('button', { id: 'ds-run', textContent: 'Run' });
+  const stepButton = element('button', { id: 'ds-step', textContent: 'Step' });
+  const playButton = element('button', { id: 'ds-play', textContent: 'Play' });
+  const speed = element('select', { id: 'ds-speed' });
+  for (const [value, text] of [['1', 'real time'], ['10', '10x'], ['0', 'fastest']]) {
+    speed.append(element('option', { value, textContent: text }));
+  }
+  const stopButton = element('button', { id: 'ds-stop', textContent: 'Stop' });
+  const cell = element('input', { id: 'ds-cell', placeholder: 'x,y,z' });
+  const addButton = element('button', { id: 'ds-add', textContent: 'Add' });
+  const removeButton = element('button', { id: 'ds-remove', textContent: 'Remove' });
+  const undoButton = element('button', { id: 'ds-undo', textContent: 'Undo' });
+  const redoButton = element('button', { id: 'ds-redo', textContent: 'Redo' });
+  const status = element('div', { id: 'ds-status', className: 'ds-status', textContent: 'connecting...' });
+  const bar = element(
+    'div',
+    { className: 'ds-bar' },
+    element('span', { className: 'ds-group' }, labelled('program', program), labelled('goal', goal),
+      labelled('start', start), labelled('seed', seed), runButton),
+    element('span', { className: 'ds-group' }, stepButton, playButton, speed, stopButton),
+    element('span', { className: 'ds-group' }, labelled('cell', cell), addButton, removeButton,
+      undoButton, redoButton),
+    status,
+  );
+  const stage = element('div', { id: 'datomsim-viewer' });
+  root.append(bar, stage);
+
+  // What the page knows, for the person and for tests (window.datomsimStudio.state()).
+  const state = { modules: 0, running: false, over: false, time: 0, events: 0, motions: 0, error: null, result: null };
+  let traceText = '';
+  let app = null;
+  let playing = false;
+
+  // The trace so far at time t: a new viewer for a new scene or run (its camera kept), the same
+  // one extended as a run grows (a new one each time would make a new 3D view).
+  function show(t, fresh = false) {
+    const trace = parseTrace(traceText);
+    if (app && !fresh) {
+      app.extend(trace);
+    } else {
+      const camera = app ? app.cameraState() : null;
+      if (app) app.dispose();
+      stage.replaceChildren();
+      app = new App(stage, trace, null);
+      if (camera) app.setCameraState(camera);
+    }
+    app.seek(t);
+    window.datomsimViewer = app.api();
+  }
+
+  function say() {
+    status.classList.toggle('ds-error', Boolean(state.error));
+    if (state.error) {
+      status.textContent = state.error;
+    } else if (state.running || state.result) {
+      const result = state.result;
+      const end = result
+        ? `, ended${result.failure ? `: ${result.failure}` : ''}${result.arrived === false ? ' (the mobile did not arrive)' : ''}`
+        : '';
+      status.textContent = `t = ${state.time.toFixed(2)} s, ${state.events} events, ${state.motions} motions${end}`;
+    } else {
+      status.textContent = `${state.modules} modules; choose a program and Run, or edit the scene`;
+    }
+    stepButton.disabled = playButton.disabled = stopButton.disabled = !state.running;
+    runButton.disabled = state.running;
+    for (const button of [addButton, removeButton, undoButton, redoButton]) button.disabled = state.running;
+  }
+
+  const token = new URLSearchParams(window.location.search).get('token');
+  const socket = new WebSocket(`ws://${window.location.host}/ws${token ? `?token=${encodeURIComponent(token)}` : ''}`);
+  const waiting = [];
+  function ask(request) {
+    return new Promise((resolve) => {
+      waiting.push(resolve);
+      socket.send(JSON.stringify(request));
+    });
+  }
+  socket.addEventListener('message', (event) => waiting.shift()(JSON.parse(event.data)));
+  socket.addEventListener('close', () => {
+    state.error = 'the studio has closed its connection: is datomsim studio still running?';
+    playing = false;
+    say();
+  });
+
+  // A reply: its error shown, or its values taken. True when it was answered with ok.
+  function took(reply) {
+    state.error = reply.ok ? null : reply.error;
+    if (!reply.ok) say();
+    return reply.ok;
+  }
+
+  function append(records) {
+    for (const record of records ?? []) traceText += `${JSON.stringify(record)}\n`;
+  }
+
+  async function loadScene() {
+    const reply = await ask({ op: 'scene' });
+    if (!took(reply)) return;
+    state.modules = reply.scene.modules.length;
+    if (program.options.length === 0) {
+      for (const name of reply.programs) program.append(element('option', { value: name, textContent: name }));
+      program.value = 'follow-gradient';
+    }
+    traceText = reply.trace_header;
+    state.result = null;
+    show(0, true);
+    say();
+  }
+
+  async function advance(request) {
+    const reply = await ask({ op: 'advance', ...request });
+    if (!took(reply)) return false;
+    append(reply.records);
+    Object.assign(state, { time: reply.time, over: reply.over, events: reply.events, motions: reply.motions });
+    show(state.time);
+    say();
+    // Over: nothing more can happen; its result is what the person wants next.
+    if (reply.over) await stop();
+    return !reply.over;
+  }
+
+  // Advances the run as time goes by (real time, ten times, or 5 s of the run per step), until
+  // paused or over.
+  async function play() {
+    if (playing) return;
+    playing = true;
+    playButton.textContent = 'Pause';
+    let last = performance.now();
+    try {
+      while (playing && state.running && !state.over) {
+        await new Promise((resolve) => setTimeout(resolve, 200));
+        const now = performance.now();
+        const factor = Number(speed.value);
+        const by = factor > 0 ? ((now - last) / 1000) * factor : 5;
+        last = now;
+        if (!(await advance({ by }))) break;
+      }
+    } finally {
+      playing = false;
+      playButton.textContent = 'Play';
+    }
+  }
+
+  // The run ended, or stopped: its result, and the trace's last records.
+  async function stop() {
+    playing = false;
+    const reply = await ask({ op: 'stop' });
+    if (!took(reply)) return;
+    traceText += reply.trace_tail;
+    Object.assign(state, { running: false, over: true, result: reply.result });
+    show(state.time);
+    say();
+  }
+
+  runButton.addEventListener('click', async () => {
+    const request = { op: 'run', program: program.value, seed: seed.value.trim() || '1' };
+    if (goal.value.trim()) request.goal = goal.value.trim();
+    if (start.value.trim()) request.start = start.value.trim();
+    const reply = await ask(request);
+    if (!took(reply)) return;
+    traceText = '';
+    append(reply.records);
+    Object.assign(state, { running: true, over: false, time: 0, events: 0, motions: 0, result: null });
+    show(0, true);
+    say();
+  });
+  stepButton.addEventListener('click', () => {
+    playing = false;
+    advance({ to: 'next' });
+  });
+  playButton.addEventListener('click', () => {
+    if (playing) playing = false;
+    else play();
+  });
+  stopButton.addEventListener('click', stop);
+  const edit = (op) => async () => {
+    const request = { op };
+    if (op === 'add' || op === 'remove') request.cell = cell.value.trim();
+    if (took(await ask(request))) await loadScene();
+  };
+  addButton.addEventListener('click', edit('add'));
+  removeButton.addEventListener('click', edit('remove'));
+  undoButton.addEventListener('click', edit('undo'));
+  redoButton.addEventListener('click', edit('redo'));
+
+  window.datomsimStudio = { state: () => ({ ...state }) };
+  socket.addEventListener('open', loadScene);
+}

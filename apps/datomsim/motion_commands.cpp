@@ -130,27 +130,10 @@ void addMoves(CLI::App& app, const Reporter& reporter) {
     CommandFiles files({{"scene", args->scene}}, {{"--out", args->out}});
     const geometry::Cell at = parseCell("--at", args->at);
     const io::Scene scene = unwrap(io::readScene(args->scene));
-    if (!scene.world.isInside(at)) {
-      throw UsageError("--at " + geometry::toString(at) + " " +
-                       scene.world.bounds().whyOutside(at));
-    }
-    const world::Module* mobile = scene.world.moduleAt(at);
-    const motion::Mobile where{at, mobile ? std::optional(mobile->id) : std::nullopt};
     const MotionChoice model = args->module.modelFor(scene, args->rules);
     const bool toTerminal = (args->out.empty() || args->out == "-") && isatty(fileno(stdout));
     const bool asTable = args->format == "table" || (args->format == "auto" && toTerminal);
-    if (model.kind == world::ModuleKind::kCatom3D) {
-      const catom3d::RollTable table;
-      const auto rolls = catom3d::evaluateAll(scene.world, table, where, model.rolling);
-      files.write("--out", asTable ? frontend::rollsTable(at, rolls, model)
-                                   : frontend::rollsJson(at, rolls, model));
-      files.commit(reporter);
-      return;
-    }
-    const motion::RuleTable table;
-    const auto moves = motion::evaluateAll(scene.world, table, where, model.datom);
-    files.write("--out",
-                asTable ? frontend::movesTable(at, moves) : frontend::movesJson(at, moves));
+    files.write("--out", frontend::movesOnScene(scene, "--at", at, model, asTable));
     files.commit(reporter);
   });
 }

@@ -1,6 +1,10 @@
 #include "frontend/motion_json.h"
 
+#include "catom3d/rolling.h"
 #include "frontend/json_stream.h"
+#include "frontend/usage_error.h"
+#include "geometry/cell_text.h"
+#include "motion/rule_table.h"
 
 #include <fmt/format.h>
 
@@ -179,6 +183,24 @@ std::string rollsTable(const Cell& at, const std::vector<catom3d::RollEvaluation
   if (validCount > 0) out += "\nvalid:\n" + header + valid;
   if (validCount < rolls.size()) out += "\nrefused:\n" + header + refused;
   return out;
+}
+
+std::string movesOnScene(const io::Scene& scene, const std::string& option,
+                         const geometry::Cell& at, const MotionChoice& model, bool asTable) {
+  if (!scene.world.isInside(at)) {
+    throw UsageError(option + " " + geometry::toString(at) + " " +
+                     scene.world.bounds().whyOutside(at));
+  }
+  const world::Module* mobile = scene.world.moduleAt(at);
+  const motion::Mobile where{at, mobile ? std::optional(mobile->id) : std::nullopt};
+  if (model.kind == world::ModuleKind::kCatom3D) {
+    const catom3d::RollTable table;
+    const auto rolls = catom3d::evaluateAll(scene.world, table, where, model.rolling);
+    return asTable ? rollsTable(at, rolls, model) : rollsJson(at, rolls, model);
+  }
+  const motion::RuleTable table;
+  const auto moves = motion::evaluateAll(scene.world, table, where, model.datom);
+  return asTable ? movesTable(at, moves) : movesJson(at, moves);
 }
 
 }  // namespace datomsim::frontend

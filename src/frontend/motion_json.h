@@ -16,6 +16,7 @@
 #include "catom3d/rolling.h"
 #include "frontend/arguments.h"
 #include "geometry/cell.h"
+#include "io/scene.h"
 #include "motion/motion.h"
 #include "motion/reach.h"
 
@@ -29,6 +30,12 @@ std::string movesJson(const geometry::Cell& at, const std::vector<motion::Evalua
 
 // The same for a person: one line per rule, valid ones first, then the refused with their reason.
 std::string movesTable(const geometry::Cell& at, const std::vector<motion::Evaluation>& moves);
+
+// `moves` at a cell of a scene: every rule of every pivot around it (or every roll, for 3D
+// Catoms), as JSON or as a table for a person. A cell outside the world is refused naming
+// `option` and the cell (UsageError).
+std::string movesOnScene(const io::Scene& scene, const std::string& option,
+                         const geometry::Cell& at, const MotionChoice& model, bool asTable);
 
 // The same two for a 3D Catom's rolls.
 std::string rollsJson(const geometry::Cell& at, const std::vector<catom3d::RollEvaluation>& rolls,

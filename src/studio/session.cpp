@@ -3,14 +3,17 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
 #include <utility>
 
 #include "algorithms/registry.h"
 #include "frontend/arguments.h"
+#include "frontend/motion_json.h"
 #include "frontend/run_json.h"
 #include "frontend/usage_error.h"
 #include "geometry/cell_text.h"
 #include "io/json_scene.h"
+#include "io/visiblesim_xml.h"
 #include "record/trace_writer.h"
 
 namespace datomsim::studio {
@@ -21,7 +24,8 @@ using Json = nlohmann::json;
 
 namespace {
 
-constexpr std::string_view kOperations = "scene, add, remove, undo, redo, run, advance, stop";
+constexpr std::string_view kOperations =
+    "scene, add, remove, undo, redo, save, open, moves, run, advance, stop";
 
 // The run's arguments a request may give, by the command line's names (without the dashes).
 constexpr std::string_view kRunKeys =
@@ -94,6 +98,9 @@ std::string Session::handle(std::string_view request) {
     if (op == "add" || op == "remove") return replyText(edit(parsed, op == "add"), "");
     if (op == "undo") return replyText(undo(undo_, redo_), "");
     if (op == "redo") return replyText(undo(redo_, undo_), "");
+    if (op == "save") return replyText(save(parsed), "");
+    if (op == "open") return replyText(open(parsed), "");
+    if (op == "moves") return replyText(moves(parsed), "");
     if (op == "run") {
       Json reply = startRun(parsed);
       return replyText(std::move(reply), newRecords());
@@ -140,7 +147,7 @@ Json Session::edit(const Json& request, bool add) {
   if (!world.isInside(cell)) {
     throw UsageError("cell " + geometry::toString(cell) + " " + world.bounds().whyOutside(cell));
   }
-  io::Scene before = scene_;
+  Snapshot before{scene_, sceneName_};
   Json reply;
   if (add) {
     if (const world::Module* there = world.moduleAt(cell)) {
@@ -164,14 +171,63 @@ Json Session::edit(const Json& request, bool add) {
   return reply;
 }
 
-Json Session::undo(std::vector<io::Scene>& from, std::vector<io::Scene>& to) {
+Json Session::undo(std::vector<Snapshot>& from, std::vector<Snapshot>& to) {
   if (running()) throw UsageError("the scene cannot change during a run: stop it first");
   if (from.empty()) throw UsageError(&from == &undo_ ? "nothing to undo" : "nothing to redo");
-  to.push_back(std::move(scene_));
-  scene_ = std::move(from.back());
+  to.push_back({std::move(scene_), std::move(sceneName_)});
+  scene_ = std::move(from.back().scene);
+  sceneName_ = std::move(from.back().name);
   from.pop_back();
   Json reply;
   reply["modules"] = scene_.world.size();
+  return reply;
+}
+
+// The scene as a file's text: the project's JSON, or VisibleSim's XML.
+Json Session::save(const Json& request) const {
+  const std::string format = request.contains("format") ? text(request, "format") : "json";
+  Json reply;
+  if (format == "json") {
+    reply["text"] = io::toJson(scene_);
+  } else if (format == "xml") {
+    reply["text"] = frontend::unwrap(io::toVisibleSimXml(scene_));
+  } else {
+    throw UsageError("save: \"format\" " + format + " not in {json,xml}");
+  }
+  return reply;
+}
+
+// A scene file's text, read as its name's extension says, in place of the scene (an edit, undone
+// like the others).
+Json Session::open(const Json& request) {
+  if (running()) throw UsageError("the scene cannot change during a run: stop it first");
+  const std::string& name = text(request, "name");
+  const std::string& content = text(request, "text");
+  const std::string extension = std::filesystem::path(name).extension().string();
+  io::Scene opened;
+  if (extension == ".json") {
+    opened = frontend::unwrap(io::parseJsonScene(content, name));
+  } else if (extension == ".xml") {
+    opened = frontend::unwrap(io::parseVisibleSimXml(content, name));
+  } else {
+    throw UsageError(name + ": a scene file is .json or .xml");
+  }
+  undo_.push_back({std::move(scene_), std::move(sceneName_)});
+  redo_.clear();
+  scene_ = std::move(opened);
+  sceneName_ = name;
+  Json reply;
+  reply["modules"] = scene_.world.size();
+  return reply;
+}
+
+// Every rule of every pivot around a cell, valid or refused with its reason (`datomsim moves`).
+Json Session::moves(const Json& request) const {
+  frontend::MotionChoice model;
+  model.kind = scene_.moduleKind;
+  Json reply;
+  reply["moves"] =
+      Json::parse(frontend::movesOnScene(scene_, "at", cellOf(request, "at"), model, false));
   return reply;
 }
 

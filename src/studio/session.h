@@ -40,7 +40,15 @@ class Session {
   // Each operation: its reply's values, or a frontend::UsageError naming what is wrong.
   Json describe() const;
   Json edit(const Json& request, bool add);
-  Json undo(std::vector<io::Scene>& from, std::vector<io::Scene>& to);
+  // A scene and the name runs give it, as the history keeps them.
+  struct Snapshot {
+    io::Scene scene;
+    std::string name;
+  };
+  Json undo(std::vector<Snapshot>& from, std::vector<Snapshot>& to);
+  Json save(const Json& request) const;
+  Json open(const Json& request);
+  Json moves(const Json& request) const;
   Json startRun(const Json& request);
   Json advance(const Json& request);
   Json stop();
@@ -50,7 +58,7 @@ class Session {
   io::Scene scene_;
   std::string sceneName_;
   // The scenes before the edits that can be undone, and before those undone.
-  std::vector<io::Scene> undo_, redo_;
+  std::vector<Snapshot> undo_, redo_;
   const motion::RuleTable table_;
   // The run in progress, its program's kind and name, and how much of its trace was sent.
   std::unique_ptr<experiment::LiveRun> run_;

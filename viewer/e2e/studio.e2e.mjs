@@ -5,6 +5,7 @@
 //
 // Prints one line per check and `N passed, M failed`; exits non-zero on a failure.
 import { execFileSync, spawn } from 'node:child_process';
+import { readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { launchBrowser } from './browser.mjs';
 import { assert, check, commonOptions, finish, repository } from './harness.mjs';
@@ -77,6 +78,38 @@ try {
     const s = await state();
     assert(s.error.includes('400,0,0'), s.error);
     assert(s.modules === 131, `modules ${s.modules}`);
+  });
+
+  await check('the moves at a cell, as datomsim moves gives them', async () => {
+    await page.fill('#ds-cell', '2,2,3');
+    await page.click('#ds-moves');
+    await waitFor(() => window.datomsimStudio.state().moves !== null);
+    const s = await state();
+    const expected = JSON.parse(
+      execFileSync(resolve(datomsim), ['moves', scene, '--at', '2,2,3', '--format', 'json'], {
+        cwd: repository,
+        encoding: 'utf8',
+      }),
+    );
+    assert(s.moves.all === expected.moves.length, `${s.moves.all} rules against ${expected.moves.length}`);
+    assert(s.moves.valid === expected.moves.filter((m) => m.valid).length, `${s.moves.valid} valid`);
+    const panel = await page.textContent('#ds-moves-panel');
+    assert(panel.includes(`${s.moves.valid} of ${s.moves.all} rules hold at 2,2,3`), panel.slice(0, 200));
+    await page.screenshot({ path: join(shots, 'studio-moves.png') });
+    await page.click('#ds-moves-panel');
+  });
+
+  await check('the scene saved as JSON is the scene file, and opened again', async () => {
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#ds-save-json')]);
+    const saved = join(shots, 'studio-saved.json');
+    await download.saveAs(saved);
+    const converted = join(shots, 'studio-converted.json');
+    execFileSync(resolve(datomsim), ['-q', 'convert', scene, '-o', converted], { cwd: repository });
+    assert(readFileSync(saved, 'utf8') === readFileSync(converted, 'utf8'), 'the saved scene differs from datomsim convert');
+    await page.setInputFiles('#ds-open', { name: 'line.json', mimeType: 'application/json', buffer: readFileSync(join(repository, 'scenes', 'reshape-line.json')) });
+    await waitFor(() => window.datomsimStudio.state().modules === 104);
+    await page.click('#ds-undo');
+    await waitFor(() => window.datomsimStudio.state().modules === 131);
   });
 
   await check('follow-gradient runs live: stepped, played, stopped, as the command line runs it', async () => {

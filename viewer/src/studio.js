@@ -6,7 +6,7 @@ import { App } from './app.js';
 import { parseTrace } from './trace.js';
 
 const STUDIO_STYLE = `
-#datomsim-studio .ds-bar { position: fixed; top: 0; left: 0; right: 0; height: 64px;
+#datomsim-studio .ds-bar { position: fixed; top: 0; left: 0; right: 0;
   display: flex; flex-wrap: wrap; align-items: center; gap: 4px 8px; padding: 4px 8px;
   box-sizing: border-box; background: #1f2430; color: #e8ecf2; font: 13px system-ui, sans-serif; }
 #datomsim-studio .ds-bar input { width: 64px; }
@@ -15,7 +15,10 @@ const STUDIO_STYLE = `
 #datomsim-studio .ds-status { flex: 1 1 100%; white-space: nowrap; overflow: hidden;
   text-overflow: ellipsis; }
 #datomsim-studio .ds-status.ds-error { color: #ff8a80; }
-#datomsim-viewer { top: 64px; }
+#datomsim-viewer { top: var(--ds-bar, 64px); }
+#datomsim-studio .ds-moves { position: fixed; top: calc(var(--ds-bar, 64px) + 8px); right: 8px; max-height: 60%; overflow: auto;
+  z-index: 5; background: rgba(255, 255, 255, 0.95); border: 1px solid #c5cbd6; padding: 6px 8px;
+  font: 12px ui-monospace, monospace; white-space: pre; }
 `;
 
 function element(tag, properties = {}, ...children) {
@@ -49,6 +52,13 @@ export function startStudio(root) {
   const removeButton = element('button', { id: 'ds-remove', textContent: 'Remove' });
   const undoButton = element('button', { id: 'ds-undo', textContent: 'Undo' });
   const redoButton = element('button', { id: 'ds-redo', textContent: 'Redo' });
+  const movesButton = element('button', { id: 'ds-moves', textContent: 'Moves', title: 'Every rule of every pivot around the cell, valid or refused with its reason' });
+  const saveJson = element('button', { id: 'ds-save-json', textContent: 'Save JSON' });
+  const saveXml = element('button', { id: 'ds-save-xml', textContent: 'Save XML' });
+  const openInput = element('input', { id: 'ds-open', type: 'file', accept: '.json,.xml' });
+  openInput.style.width = '170px';
+  const movesPanel = element('div', { id: 'ds-moves-panel', className: 'ds-moves' });
+  movesPanel.hidden = true;
   const status = element('div', { id: 'ds-status', className: 'ds-status', textContent: 'connecting...' });
   const bar = element(
     'div',
@@ -57,14 +67,23 @@ export function startStudio(root) {
       labelled('start', start), labelled('seed', seed), runButton),
     element('span', { className: 'ds-group' }, stepButton, playButton, speed, stopButton),
     element('span', { className: 'ds-group' }, labelled('cell', cell), addButton, removeButton,
-      undoButton, redoButton),
+      movesButton, undoButton, redoButton),
+    element('span', { className: 'ds-group' }, saveJson, saveXml, openInput),
     status,
   );
   const stage = element('div', { id: 'datomsim-viewer' });
-  root.append(bar, stage);
+  root.append(bar, stage, movesPanel);
+  // The viewer below the bar, however many lines the bar takes on this window.
+  const fitBelowBar = () => {
+    const height = `${bar.offsetHeight}px`;
+    if (document.documentElement.style.getPropertyValue('--ds-bar') === height) return;
+    document.documentElement.style.setProperty('--ds-bar', height);
+    window.dispatchEvent(new Event('resize'));
+  };
+  new ResizeObserver(fitBelowBar).observe(bar);
 
   // What the page knows, for the person and for tests (window.datomsimStudio.state()).
-  const state = { modules: 0, running: false, over: false, time: 0, events: 0, motions: 0, error: null, result: null };
+  const state = { moves: null, modules: 0, running: false, over: false, time: 0, events: 0, motions: 0, error: null, result: null };
   let traceText = '';
   let app = null;
   let playing = false;
@@ -102,6 +121,7 @@ export function startStudio(root) {
     stepButton.disabled = playButton.disabled = stopButton.disabled = !state.running;
     runButton.disabled = state.running;
     for (const button of [addButton, removeButton, undoButton, redoButton]) button.disabled = state.running;
+    openInput.disabled = state.running;
   }
 
   const token = new URLSearchParams(window.location.search).get('token');
@@ -220,6 +240,46 @@ export function startStudio(root) {
   removeButton.addEventListener('click', edit('remove'));
   undoButton.addEventListener('click', edit('undo'));
   redoButton.addEventListener('click', edit('redo'));
+
+  // The moves at the cell typed: valid ones first, then the refused with their reason.
+  movesButton.addEventListener('click', async () => {
+    const reply = await ask({ op: 'moves', at: cell.value.trim() });
+    if (!took(reply)) return;
+    const moves = reply.moves.moves;
+    const line = (m) => `pivot ${m.pivot.join(',')} piston ${m.piston ?? m.face} ${m.turn ?? ''} -> ${m.goal.join(',')}`;
+    const valid = moves.filter((m) => m.valid).map(line);
+    const refused = moves.filter((m) => !m.valid).map((m) => `${line(m)}: ${m.refusal}`);
+    movesPanel.textContent =
+      `${valid.length} of ${moves.length} rules hold at ${reply.moves.at.join(',')}\n` +
+      [...valid, '', ...refused].join('\n');
+    movesPanel.hidden = false;
+    state.moves = { valid: valid.length, all: moves.length };
+    say();
+  });
+  movesPanel.addEventListener('click', () => {
+    movesPanel.hidden = true;
+  });
+
+  // The scene as a file, downloaded.
+  const save = (format) => async () => {
+    const reply = await ask({ op: 'save', format });
+    if (!took(reply)) return;
+    const link = element('a', {
+      href: URL.createObjectURL(new Blob([reply.text], { type: format === 'xml' ? 'application/xml' : 'application/json' })),
+      download: `scene.${format}`,
+    });
+    link.click();
+    URL.revokeObjectURL(link.href);
+  };
+  saveJson.addEventListener('click', save('json'));
+  saveXml.addEventListener('click', save('xml'));
+  openInput.addEventListener('change', async () => {
+    const file = openInput.files[0];
+    if (!file) return;
+    const reply = await ask({ op: 'open', name: file.name, text: await file.text() });
+    openInput.value = '';
+    if (took(reply)) await loadScene();
+  });
 
   window.datomsimStudio = { state: () => ({ ...state }) };
   socket.addEventListener('open', loadScene);

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "frontend/motion_json.h"
 #include "frontend/run_json.h"
 #include "frontend/run_on_scene.h"
 #include "geometry/cell_text.h"
@@ -89,6 +90,48 @@ TEST(StudioSession, AnEditIsUndoneAndRedone) {
   const json scene = ask(session, {{"op", "scene"}});
   EXPECT_TRUE(scene.at("can_undo").get<bool>());
   EXPECT_EQ(scene.at("scene").at("modules").size(), modules);
+}
+
+TEST(StudioSession, TheSceneIsSavedAndOpenedAsItsFilesAre) {
+  Session session(arch(), "arch");
+  const json saved = ask(session, {{"op", "save"}, {"format", "json"}});
+  ASSERT_TRUE(saved.at("ok").get<bool>()) << saved;
+  EXPECT_EQ(saved.at("text").get<std::string>(), io::toJson(arch()));
+  const json xml = ask(session, {{"op", "save"}, {"format", "xml"}});
+  ASSERT_TRUE(xml.at("ok").get<bool>()) << xml;
+  EXPECT_NE(xml.at("text").get<std::string>().find("<world gridSize=\"11,11,11\""),
+            std::string::npos);
+  refused(session, R"({"op": "save", "format": "obj"})", "\"format\" obj not in {json,xml}");
+
+  // A smaller scene opened from its text, then the arch back by undo.
+  const std::string line =
+      io::toJson(*io::readScene(std::string(DATOMSIM_SOURCE_DIR) + "/scenes/reshape-line.json"));
+  const json opened = ask(session, {{"op", "open"}, {"name", "line.json"}, {"text", line}});
+  ASSERT_TRUE(opened.at("ok").get<bool>()) << opened;
+  EXPECT_EQ(io::toJson(session.scene()), line);
+  refused(session, json{{"op", "open"}, {"name", "bad.json"}, {"text", "{\"format\": 1"}}.dump(),
+          "bad.json");
+  refused(session, json{{"op", "open"}, {"name", "scene.obj"}, {"text", ""}}.dump(),
+          "scene.obj: a scene file is .json or .xml");
+  ASSERT_TRUE(ask(session, {{"op", "undo"}}).at("ok").get<bool>());
+  EXPECT_EQ(io::toJson(session.scene()), io::toJson(arch()));
+  // Its name came back with it: a run names the scene it ran on.
+  const std::string header = ask(session, {{"op", "scene"}}).at("trace_header");
+  EXPECT_NE(header.find("\"description\":\"arch\""), std::string::npos) << header.substr(0, 200);
+}
+
+TEST(StudioSession, MovesAtACellAreTheCommandLines) {
+  Session session(arch(), "arch");
+  const json reply = ask(session, {{"op", "moves"}, {"at", "2,2,3"}});
+  ASSERT_TRUE(reply.at("ok").get<bool>()) << reply;
+  frontend::MotionChoice model;
+  EXPECT_EQ(reply.at("moves"),
+            json::parse(frontend::movesOnScene(arch(), "--at", {2, 2, 3}, model, false)));
+  size_t valid = 0;
+  for (const json& move : reply.at("moves").at("moves")) valid += move.at("valid").get<bool>();
+  EXPECT_GT(valid, 0u);
+  EXPECT_LT(valid, reply.at("moves").at("moves").size());
+  refused(session, R"({"op": "moves", "at": "400,0,0"})", "at 400,0,0");
 }
 
 // The run as the command line runs it, with the same arguments.

@@ -71,6 +71,29 @@ try {
     await waitFor(() => window.datomsimStudio.state().modules === 131);
   });
 
+  await check('a click names the cell of a module, a shift-click adds a module on the face clicked', async () => {
+    const modules = await page.evaluate(() => window.datomsimViewer.modules());
+    const top = modules.reduce((a, b) => (b.cell[2] > a.cell[2] ? b : a));
+    const at = await page.evaluate((id) => window.datomsimViewer.screenPositionOf(id), top.id);
+    await page.focus('#ds-goal');
+    await page.mouse.click(at.x, at.y);
+    const goal = await page.inputValue('#ds-goal');
+    assert(goal === top.cell.join(','), `goal ${goal} against the module's cell ${top.cell}`);
+    await page.fill('#ds-goal', '');
+    await page.keyboard.down('Shift');
+    await page.mouse.click(at.x, at.y);
+    await page.keyboard.up('Shift');
+    await waitFor(() => window.datomsimStudio.state().modules === 132);
+    const added = (await page.inputValue('#ds-cell')).split(',').map(Number);
+    const offset = added.map((c, k) => c - top.cell[k]);
+    const neighbours = ['1,0,0', '0,1,0', '0,0,1', '-1,0,1', '-1,-1,1', '0,-1,1', '-1,0,0', '0,-1,0', '0,0,-1', '1,0,-1', '1,1,-1', '0,1,-1'];
+    assert(neighbours.includes(offset.join(',')), `the cell added ${added} is no neighbour of ${top.cell}`);
+    assert(!modules.some((m) => m.cell.join(',') === added.join(',')), `${added} held a module already`);
+    await page.screenshot({ path: join(shots, 'studio-added.png') });
+    await page.click('#ds-undo');
+    await waitFor(() => window.datomsimStudio.state().modules === 131);
+  });
+
   await check('a bad cell is refused with the message, and changes nothing', async () => {
     await page.fill('#ds-cell', '400,0,0');
     await page.click('#ds-add');

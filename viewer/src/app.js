@@ -273,7 +273,10 @@ export class App {
       const moved = Math.hypot(event.clientX - down.x, event.clientY - down.y);
       down = null;
       if (moved > 4) return; // a drag of the camera, not a click
-      this.select(this.view.pick(event.clientX, event.clientY));
+      const picked = this.view.pickPoint(event.clientX, event.clientY);
+      this.select(picked.index);
+      // The studio's: a click names a cell, a shift-click a face to add a module on.
+      if (this.onPick) this.onPick(picked.index, picked.point, event);
     });
     const signal = this.listening.signal;
     window.addEventListener(

@@ -3,6 +3,7 @@
 // steps, plays and stops it. Every request is answered; a refused one shows its error and changes
 // nothing.
 import { App } from './app.js';
+import { NEIGHBOUR_OFFSETS, addCells, nearestDirection } from './lattice.js';
 import { parseTrace } from './trace.js';
 
 const STUDIO_STYLE = `
@@ -102,7 +103,28 @@ export function startStudio(root) {
       if (camera) app.setCameraState(camera);
     }
     app.seek(t);
+    app.onPick = picked;
     window.datomsimViewer = app.api();
+  }
+
+  // A click on a module puts its cell in the cell field last used (goal, start or cell); a
+  // shift-click on one of its faces adds a module in the cell that face looks at.
+  let cellField = cell;
+  for (const field of [goal, start, cell]) field.addEventListener('focus', () => (cellField = field));
+  async function picked(index, point, event) {
+    if (index < 0) return;
+    const module = app.frame.modules[index];
+    if (!event.shiftKey) {
+      cellField.value = module.cell.join(',');
+      return;
+    }
+    if (state.running) return;
+    const p = module.position.toArray();
+    const away = [point[0] - p[0], point[1] - p[1], point[2] - p[2]];
+    const length = Math.hypot(...away) || 1;
+    const next = addCells(module.cell, NEIGHBOUR_OFFSETS[nearestDirection(away.map((c) => c / length))]);
+    cell.value = next.join(',');
+    if (took(await ask({ op: 'add', cell: cell.value }))) await loadScene();
   }
 
   function say() {

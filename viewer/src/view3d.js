@@ -541,6 +541,12 @@ export class View3D {
 
   // The module under a point of the canvas (client coordinates), or -1.
   pick(clientX, clientY) {
+    return this.pickPoint(clientX, clientY).index;
+  }
+
+  // The module under a point of the screen and where the ray meets it (world coordinates), or
+  // index -1.
+  pickPoint(clientX, clientY) {
     const rect = this.renderer.domElement.getBoundingClientRect();
     const pointer = new THREE.Vector2(
       ((clientX - rect.left) / rect.width) * 2 - 1,
@@ -549,11 +555,12 @@ export class View3D {
     const raycaster = new THREE.Raycaster();
     raycaster.setFromCamera(pointer, this.camera);
     const hits = raycaster.intersectObjects(this.solidMeshes, false);
-    if (hits.length === 0 || hits[0].instanceId === undefined) return -1;
+    if (hits.length === 0 || hits[0].instanceId === undefined) return { index: -1, point: null };
     const hit = hits[0];
-    if (hit.object === this.bodyMesh) return hit.instanceId;
-    if (hit.object === this.connectorMesh) return Math.floor(hit.instanceId / 12);
-    return Math.floor(hit.instanceId / this.kinematics.partCount);
+    let index = Math.floor(hit.instanceId / this.kinematics.partCount);
+    if (hit.object === this.bodyMesh) index = hit.instanceId;
+    else if (hit.object === this.connectorMesh) index = Math.floor(hit.instanceId / 12);
+    return { index, point: hit.point.toArray() };
   }
 
   // Screen position (client coordinates) of a module's centre in the current frame.

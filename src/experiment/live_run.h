@@ -40,7 +40,6 @@ class LiveRun {
   Time now() const { return simulator_->now(); }
   // The time of the next event, if any remains.
   std::optional<Time> nextEventTime() const { return simulator_->nextEventTime(); }
-  const world::World& world() const { return simulator_->world(); }
   const sim::Statistics& statistics() const { return simulator_->statistics(); }
   // The trace so far (RunRequest::trace): its header and every record of the events run.
   const std::string& traceSoFar() const { return trace_->text(); }

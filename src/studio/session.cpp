@@ -147,21 +147,22 @@ Json Session::edit(const Json& request, bool add) {
   if (!world.isInside(cell)) {
     throw UsageError("cell " + geometry::toString(cell) + " " + world.bounds().whyOutside(cell));
   }
+  const world::Module* there = world.moduleAt(cell);
+  if (add && there) {
+    throw UsageError(
+        fmt::format("cell {} holds module {} already", geometry::toString(cell), there->id.value));
+  }
+  if (!add && !there) throw UsageError("cell " + geometry::toString(cell) + " holds no module");
+  // Kept for undo only once the edit is known to be made: a refused one copies nothing.
   Snapshot before{scene_, sceneName_};
   Json reply;
   if (add) {
-    if (const world::Module* there = world.moduleAt(cell)) {
-      throw UsageError(fmt::format("cell {} holds module {} already", geometry::toString(cell),
-                                   there->id.value));
-    }
     world::Module module;
     module.id = world.nextFreeId();
     module.cell = cell;
     frontend::check(world.add(module));
     reply["id"] = module.id.value;
   } else {
-    const world::Module* there = world.moduleAt(cell);
-    if (!there) throw UsageError("cell " + geometry::toString(cell) + " holds no module");
     reply["id"] = there->id.value;
     frontend::check(world.remove(there->id));
   }
@@ -288,7 +289,6 @@ Json Session::startRun(const Json& request) {
   if (!started.ok()) throw UsageError(started.error());
   run_ = std::move(*started);
   runKind_ = prepared.kind;
-  runProgram_ = args.program;
   traceSent_ = 0;
   clock_ = 0;
   Json reply;
@@ -331,7 +331,7 @@ Json Session::stop() {
   if (!finished.ok()) throw UsageError(finished.error());
   const frontend::RunOutput output = frontend::runOutputOf(*runKind_, std::move(*finished));
   Json reply;
-  reply["result"] = Json::parse(frontend::runJson(runProgram_, output.result));
+  reply["result"] = Json::parse(frontend::runJson(runKind_->name, output.result));
   if (output.failure) reply["failure"] = *output.failure;
   // The trace's last records, its footer among them: the page has the whole run.
   reply["trace_tail"] =

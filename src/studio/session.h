@@ -60,10 +60,9 @@ class Session {
   // The scenes before the edits that can be undone, and before those undone.
   std::vector<Snapshot> undo_, redo_;
   const motion::RuleTable table_;
-  // The run in progress, its program's kind and name, and how much of its trace was sent.
+  // The run in progress, its program's kind, and how much of its trace was sent.
   std::unique_ptr<experiment::LiveRun> run_;
   std::optional<algorithms::ProgramKind> runKind_;
-  std::string runProgram_;
   size_t traceSent_ = 0;
   // The time the run has been advanced to: an advance "by" counts from it (the last event may
   // lie well before it, in the middle of a motion).

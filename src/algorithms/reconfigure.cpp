@@ -49,19 +49,6 @@ void ReconfigureProgram::onMessage(Context& context, int ownConnector, const Mes
     if (!replied.ok()) ++lostReplies_;
     return;
   }
-  if (message.as<SettledQuery>()) {
-    // The asker may have let go of the latch meanwhile; its watchdog copes with a lost reply.
-    if (!context.send(ownConnector, Message::of(SettledReply{settled_})).ok()) ++lostReplies_;
-    return;
-  }
-  if (const auto* reply = message.as<SettledReply>()) {
-    if (phase_ != Phase::kConfirming) return;
-    if (!reply->settled) unsettledAround_ = true;
-    if (--waitingReplies_ > 0) return;
-    // A cell on the way of a passing mover is not yet this one's to fill: go on as a mover.
-    if (unsettledAround_) return retryLater(context);
-    return settle(context);
-  }
   if (const auto* reply = message.as<GoalReply>()) {
     if (phase_ != Phase::kAsking || reply->candidate < 0 ||
         reply->candidate >= int32_t(candidates_.size())) {
@@ -83,9 +70,12 @@ void ReconfigureProgram::onMessage(Context& context, int ownConnector, const Mes
     }
     return true;
   };
-  if (routed(message.as<ShapeDistanceNotice>(), [&](const ShapeDistanceNotice& notice) {
-        learnFrom(notice.cell, notice.distance, notice.version);
-      })) {
+  if (routed(message.as<ShapeDistanceNotice>(),
+             [&](const ShapeDistanceNotice& notice) {
+               learnFrom(notice.cell, notice.distance, notice.version);
+             }) ||
+      routed(message.as<FillQuery>(), [&](const FillQuery& q) { answerFill(context, q); }) ||
+      routed(message.as<FillReply>(), [&](const FillReply& r) { hearFill(context, r); })) {
     return;
   }
   // The helpers' protocol (helpers.h): this module as a helper, then as the mover.

@@ -25,7 +25,9 @@
 //     passing through then is seeded by that mover when it has left it, at once, in the version
 //     of now; otherwise no version would ever seed it if it was the last open cell.
 //   - On an open cell, a mover asks the modules of the cells to fill before it whether they stay
-//     (a mover passing through looks the same to the senses), and settles when they all do.
+//     (a mover passing through looks the same to the senses), and the movers beside it off the
+//     target whether they keep a way out once it stays (one walled in would never leave its
+//     cell, and a target cell would stay empty); it settles when they all agree.
 //   - A helper asked to compress for several motions with the same piston holds it until the last
 //     lets go, or its lease lapses.
 //   - A pocket (an open cell walled in on its layer, which no mover can enter) is filled by a
@@ -84,13 +86,14 @@ struct GoalReply {
 };
 
 // A mover about to fill a cell asks the modules in the cells that must be filled first whether
-// they stay there.
-struct SettledQuery {
-  static constexpr std::string_view kName = "SettledQuery";
+// they stay there, and the movers beside it off the target whether they keep a way out.
+// Routed: a mover's goal may be a second neighbour of its cell, not latched to the asker.
+struct FillQuery : RoutedMsg {
+  static constexpr std::string_view kName = "FillQuery";
 };
-struct SettledReply {
-  static constexpr std::string_view kName = "SettledReply";
-  bool settled;
+struct FillReply : RoutedMsg {
+  static constexpr std::string_view kName = "FillReply";
+  bool agreed = false;
 };
 
 struct ProgramKind;
@@ -191,9 +194,17 @@ class ReconfigureProgram : public Program {
   bool isOpen(Context& context, const geometry::Cell& cell) const;
 
   // Settling and pockets (reconfigure_settling.cpp). On an open cell: settles once the modules of
-  // the cells to be filled before it say they stay.
+  // the cells to be filled before it say they stay, and the movers beside it off the target that
+  // they keep a way out.
   void confirm(Context& context);
   void settle(Context& context);
+  // For a mover off the target asked by one about to fill a cell beside it: whether it has a
+  // motion left about a pivot on the target (one about another mover may go with that mover).
+  bool keepsAWayOut(Context& context) const;
+  // Whether this mover's cell is open and not one it gave up for a mover it would wall in.
+  bool mayFillOwnCell(Context& context) const;
+  void answerFill(Context& context, const FillQuery& query);
+  void hearFill(Context& context, const FillReply& reply);
   // A settled module next to a pocket that it can fill leaves its cell for it.
   void repairPocket(Context& context);
   void stepIntoPocket(Context& context);
@@ -257,7 +268,11 @@ class ReconfigureProgram : public Program {
   uint64_t chosenVersion_ = 0;
   MotionHelpers helpers_;  // the chosen motion's
   bool retryAfterRelease_ = false;
-  bool unsettledAround_ = false;  // a confirmation heard of a mover in a cell to fill first
+  uint32_t confirmRequest_ = 0;  // the request number of this confirmation's queries
+  bool disagreed_ = false;
+  // The cell this mover gave up filling for a mover it would wall in, until its next motion.
+  std::optional<geometry::Cell>
+      givenUp_;  // a confirmation heard of a mover in a cell to fill first, or walled in
   int motions_ = 0;
   int refusals_ = 0;
   int idleRounds_ = 0;

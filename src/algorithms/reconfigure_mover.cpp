@@ -41,7 +41,7 @@ void ReconfigureProgram::step(Context& context) {
   // A module that holds a piston for another's motion waits for it to be done.
   if (makingWay()) return retryLater(context);
   if (leavingFor_) return stepIntoPocket(context);
-  if (isOpen(context, context.cell())) return confirm(context);
+  if (mayFillOwnCell(context)) return confirm(context);
   candidates_ = context.motions();
   if (candidates_.empty()) return retryLater(context);
   candidateDistances_.assign(candidates_.size(), kUnknown);
@@ -252,7 +252,7 @@ void ReconfigureProgram::afterRelease(Context& context) {
   helpers_.clear();
   chosen_.reset();
   phase_ = Phase::kWaiting;
-  if (isOpen(context, context.cell())) return confirm(context);
+  if (mayFillOwnCell(context)) return confirm(context);
   // After a motion, go on at once; after a refusal, wait first.
   if (retryAfterRelease_) {
     retryAfterRelease_ = false;
@@ -270,6 +270,7 @@ void ReconfigureProgram::onMotionEnded(Context& context, const MotionEnded& ende
   }
   ++motions_;
   leavingFor_.reset();
+  givenUp_.reset();
   failedGoals_.clear();
   // Counted only while the mover does not descend: a way down forgets the wandering before it.
   if (standing_ != kUnknown && chosenDistance_ < standing_ && chosenVersion_ == standingVersion_) {

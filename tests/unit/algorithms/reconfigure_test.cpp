@@ -165,6 +165,37 @@ TEST(Reconfigure, AMotionRefusedForACellAnotherHoldsIsTriedAgainWhenThatMotionEn
       << triedAgainAtTheEnd << " of " << refusals.size();
 }
 
+// A mover in a hole of the target (a cell off it, walled by target cells on its layer) has one
+// way out, through the last empty cell beside it; another mover that comes to fill that cell
+// asks it first, and gives the cell up while it would wall the mover in. Before, whenever the
+// other came first (4 seeds of these 12), the mover stayed walled in for good and the cell its
+// filler left was never filled again: "target cells no module can reach: 2,4,1".
+TEST(Reconfigure, AFillThatWouldWallAMoverInWaitsForItToLeave) {
+  testing::WorldBuilder builder;
+  builder.box({0, 0, 0}, {5, 5, 1});
+  std::vector<Cell> target;
+  for (int x = 0; x < 5; ++x) {
+    for (int y = 0; y < 5; ++y) {
+      target.push_back({x, y, 0});
+      const Cell cell{x, y, 1};
+      if (cell == Cell{2, 2, 1}) continue;  // the hole
+      target.push_back(cell);
+      if (cell != Cell{2, 3, 1}) builder.module(cell);  // the hole's way out is empty
+    }
+  }
+  builder.module({2, 2, 1});  // the mover in the hole
+  const world::World world = builder.build();
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    auto request = reconfigure(target, seed);
+    request.reshape.stall = 120 * kSecond;
+    const auto run = experiment::runProgram(world, table(), request);
+    ASSERT_TRUE(run.ok()) << run.error();
+    ASSERT_FALSE(run->failure) << *run->failure;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expectBuilt(*run, target);
+  }
+}
+
 // A target that no motion can complete is refused before the run, the cells named: in a world one
 // layer high, every Datom motion needs a cell of another layer.
 TEST(Reconfigure, ATargetNoMotionCanEnterIsRefusedBeforeTheRun) {

@@ -269,10 +269,10 @@ class ReconfigureProgram : public Program {
   MotionHelpers helpers_;  // the chosen motion's
   bool retryAfterRelease_ = false;
   uint32_t confirmRequest_ = 0;  // the request number of this confirmation's queries
+  // A confirmation heard of a mover in a cell to fill first, or of one this fill walls in.
   bool disagreed_ = false;
   // The cell this mover gave up filling for a mover it would wall in, until its next motion.
-  std::optional<geometry::Cell>
-      givenUp_;  // a confirmation heard of a mover in a cell to fill first, or walled in
+  std::optional<geometry::Cell> givenUp_;
   int motions_ = 0;
   int refusals_ = 0;
   int idleRounds_ = 0;

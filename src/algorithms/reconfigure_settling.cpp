@@ -1,6 +1,8 @@
 #include "algorithms/reconfigure.h"
 
 #include <algorithm>
+#include <array>
+#include <vector>
 
 #include "geometry/lattice.h"
 
@@ -25,7 +27,8 @@ void ReconfigureProgram::confirm(Context& context) {
     const Cell next = here + geometry::neighbourOffset(d);
     if (!target_->contains(next)) continue;
     const bool below = d >= 8;
-    const bool inward = (d == 0 || d == 1 || d == 6 || d == 7) && target_->rank(next) < rank;
+    const bool inward = std::find(kSameLayer.begin(), kSameLayer.end(), d) != kSameLayer.end() &&
+                        target_->rank(next) < rank;
     if (!below && !inward) continue;
     // Empty again (its module left): not open any more.
     if (!context.occupied(next).value_or(false)) return retryLater(context);
@@ -38,8 +41,9 @@ void ReconfigureProgram::confirm(Context& context) {
     if (!target_->contains(cell) && context.occupied(cell).value_or(false)) ask.push_back(cell);
   };
   for (int d = 0; d < geometry::kDirectionCount; ++d) askMover(here + geometry::neighbourOffset(d));
-  for (int axis = 0; axis < geometry::kAxisCount; ++axis)
+  for (int axis = 0; axis < geometry::kAxisCount; ++axis) {
     askMover(here + geometry::doubledAxis(axis));
+  }
   if (ask.empty()) return settle(context);
   phase_ = Phase::kConfirming;
   waitingReplies_ = 0;

@@ -82,8 +82,10 @@ std::string replyText(Json reply, const std::string& records) {
 
 }  // namespace
 
-Session::Session(io::Scene scene, std::string sceneName)
-    : scene_(std::move(scene)), sceneName_(std::move(sceneName)) {}
+Session::Session(io::Scene scene, std::string sceneName, size_t mostRecordBytes)
+    : scene_(std::move(scene)),
+      sceneName_(std::move(sceneName)),
+      mostRecordBytes_(mostRecordBytes) {}
 
 Session::~Session() = default;
 
@@ -311,10 +313,24 @@ Json Session::advance(const Json& request) {
   } else {
     throw UsageError("advance: give \"until\" or \"by\" (seconds), or \"to\": \"next\"");
   }
-  clock_ = std::max(clock_, until);
-  const bool over = run_->advance(clock_);
+  // In slices of a second of simulated time (or up to the next event, if later): one request for
+  // hours of a large run would otherwise build a reply of gigabytes. A run advanced in slices is
+  // the run advanced at once (experiment::LiveRun).
+  const Time target = std::max(clock_, until);
+  bool over = false;
+  bool capped = false;
+  do {
+    Time to = target;
+    if (const std::optional<Time> next = run_->nextEventTime()) {
+      to = std::min(target, std::max(*next, clock_ + kSecond));
+    }
+    clock_ = to;
+    over = run_->advance(clock_);
+    capped = !over && clock_ < target && run_->traceSoFar().size() - traceSent_ > mostRecordBytes_;
+  } while (!over && !capped && clock_ < target);
   Json reply;
   reply["time"] = double(clock_) / kSecond;
+  reply["capped"] = capped;
   reply["event_time"] = double(run_->now()) / kSecond;
   reply["over"] = over;
   const std::optional<Time> next = run_->nextEventTime();

@@ -25,8 +25,12 @@ namespace datomsim::studio {
 
 class Session {
  public:
+  // How many bytes of trace records one reply carries at most, about: an advance that would
+  // bring more stops at the end of the slice of simulated time that passes it, and says so.
+  static constexpr size_t kMostRecordBytes = size_t{16} << 20;
+
   // The scene the studio opens (`sceneName` for the run's description).
-  Session(io::Scene scene, std::string sceneName);
+  Session(io::Scene scene, std::string sceneName, size_t mostRecordBytes = kMostRecordBytes);
   ~Session();
 
   // One request, as text; its reply, as text (always one JSON object).
@@ -67,6 +71,7 @@ class Session {
   // The time the run has been advanced to: an advance "by" counts from it (the last event may
   // lie well before it, in the middle of a motion).
   Time clock_ = 0;
+  size_t mostRecordBytes_;
 };
 
 }  // namespace datomsim::studio

@@ -191,5 +191,44 @@ TEST(StudioSession, ARunSteppedInTheStudioIsTheCommandLinesRun) {
             json::parse(frontend::runJson("follow-gradient", expected.result))["motions"]);
 }
 
+// An advance that would bring more trace records than a reply carries stops early, says so, and
+// the page asks again: the run is the same, byte for byte.
+TEST(StudioSession, AnAdvanceThatWouldBringTooManyRecordsStopsEarlyAndSaysSo) {
+  Session session(arch(), "arch", /*mostRecordBytes=*/2000);
+  const json started = ask(session, {{"op", "run"},
+                                     {"program", "follow-gradient"},
+                                     {"goal", {6, 5, 2}},
+                                     {"start", "0,0,2"},
+                                     {"seed", 3}});
+  ASSERT_TRUE(started.at("ok").get<bool>()) << started;
+  std::string trace;
+  for (const json& record : started.at("records")) trace += record.dump() + "\n";
+  int replies = 0, capped = 0;
+  for (bool over = false; !over; ++replies) {
+    const json reply = ask(session, {{"op", "advance"}, {"until", 1e6}});
+    ASSERT_TRUE(reply.at("ok").get<bool>()) << reply;
+    for (const json& record : reply.at("records")) trace += record.dump() + "\n";
+    over = reply.at("over").get<bool>();
+    if (reply.at("capped").get<bool>()) {
+      ++capped;
+      EXPECT_LT(reply.at("time").get<double>(), 1e6);
+      EXPECT_FALSE(over);
+    }
+    ASSERT_LT(replies, 100000);
+  }
+  EXPECT_GE(capped, 3) << "the run's trace no longer passes the cap: the test tests nothing";
+  const json stopped = ask(session, {{"op", "stop"}});
+  ASSERT_TRUE(stopped.at("ok").get<bool>()) << stopped;
+  trace += stopped.at("trace_tail").get<std::string>();
+  const frontend::RunOutput expected = commandLineRun();
+  std::istringstream got(trace), want(expected.result.trace);
+  std::string a, b;
+  while (std::getline(want, b)) {
+    ASSERT_TRUE(std::getline(got, a)) << "the studio's trace ends early";
+    EXPECT_EQ(json::parse(a), json::parse(b));
+  }
+  EXPECT_FALSE(std::getline(got, a)) << "the studio's trace is longer";
+}
+
 }  // namespace
 }  // namespace datomsim::studio

@@ -145,13 +145,32 @@ frontend::RunOutput commandLineRun() {
   return frontend::runOnScene(arch(), "arch", args);
 }
 
+// Starts the same run in the studio.
+json startRun(Session& session) {
+  return ask(session, {{"op", "run"},
+                       {"program", "follow-gradient"},
+                       {"goal", {6, 5, 2}},
+                       {"start", "0,0,2"},
+                       {"seed", 3}});
+}
+
+// The studio's trace is the command line's. Records went through a JSON parser and back:
+// compared as JSON, line by line.
+void expectCommandLineTrace(const std::string& trace, const frontend::RunOutput& expected) {
+  std::istringstream got(trace), want(expected.result.trace);
+  std::string a, b;
+  size_t lines = 0;
+  while (std::getline(want, b)) {
+    ASSERT_TRUE(std::getline(got, a)) << "the studio's trace ends early, at line " << lines;
+    EXPECT_EQ(json::parse(a), json::parse(b)) << "line " << lines;
+    ++lines;
+  }
+  EXPECT_FALSE(std::getline(got, a)) << "the studio's trace is longer";
+}
+
 TEST(StudioSession, ARunSteppedInTheStudioIsTheCommandLinesRun) {
   Session session(arch(), "arch");
-  const json started = ask(session, {{"op", "run"},
-                                     {"program", "follow-gradient"},
-                                     {"goal", {6, 5, 2}},
-                                     {"start", "0,0,2"},
-                                     {"seed", 3}});
+  const json started = startRun(session);
   ASSERT_TRUE(started.at("ok").get<bool>()) << started;
   std::string trace;
   for (const json& record : started.at("records")) trace += record.dump() + "\n";
@@ -177,16 +196,7 @@ TEST(StudioSession, ARunSteppedInTheStudioIsTheCommandLinesRun) {
   EXPECT_FALSE(session.running());
 
   const frontend::RunOutput expected = commandLineRun();
-  // Records went through a JSON parser and back: compared as JSON, line by line.
-  std::istringstream got(trace), want(expected.result.trace);
-  std::string a, b;
-  size_t lines = 0;
-  while (std::getline(want, b)) {
-    ASSERT_TRUE(std::getline(got, a)) << "the studio's trace ends early, at line " << lines;
-    EXPECT_EQ(json::parse(a), json::parse(b)) << "line " << lines;
-    ++lines;
-  }
-  EXPECT_FALSE(std::getline(got, a)) << "the studio's trace is longer";
+  expectCommandLineTrace(trace, expected);
   EXPECT_EQ(stopped.at("result").at("motions"),
             json::parse(frontend::runJson("follow-gradient", expected.result))["motions"]);
 }
@@ -195,11 +205,7 @@ TEST(StudioSession, ARunSteppedInTheStudioIsTheCommandLinesRun) {
 // the page asks again: the run is the same, byte for byte.
 TEST(StudioSession, AnAdvanceThatWouldBringTooManyRecordsStopsEarlyAndSaysSo) {
   Session session(arch(), "arch", /*mostRecordBytes=*/2000);
-  const json started = ask(session, {{"op", "run"},
-                                     {"program", "follow-gradient"},
-                                     {"goal", {6, 5, 2}},
-                                     {"start", "0,0,2"},
-                                     {"seed", 3}});
+  const json started = startRun(session);
   ASSERT_TRUE(started.at("ok").get<bool>()) << started;
   std::string trace;
   for (const json& record : started.at("records")) trace += record.dump() + "\n";
@@ -220,14 +226,7 @@ TEST(StudioSession, AnAdvanceThatWouldBringTooManyRecordsStopsEarlyAndSaysSo) {
   const json stopped = ask(session, {{"op", "stop"}});
   ASSERT_TRUE(stopped.at("ok").get<bool>()) << stopped;
   trace += stopped.at("trace_tail").get<std::string>();
-  const frontend::RunOutput expected = commandLineRun();
-  std::istringstream got(trace), want(expected.result.trace);
-  std::string a, b;
-  while (std::getline(want, b)) {
-    ASSERT_TRUE(std::getline(got, a)) << "the studio's trace ends early";
-    EXPECT_EQ(json::parse(a), json::parse(b));
-  }
-  EXPECT_FALSE(std::getline(got, a)) << "the studio's trace is longer";
+  expectCommandLineTrace(trace, commandLineRun());
 }
 
 }  // namespace

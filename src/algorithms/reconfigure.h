@@ -281,6 +281,15 @@ class ReconfigureProgram : public Program {
   int32_t standing_ = kUnknown;
   uint64_t standingVersion_ = 0;
   int roundsWithoutDescent_ = 0;
+  // Sideways or up motions in a row, and whether the chosen motion is one: each doubles the wait
+  // before the next, in motion times (choose()). When the chosen motion was chosen, and how long
+  // the last one took from then to its arrival (helpers' compressions included).
+  int sidewaysMotions_ = 0;
+  bool chosenSideways_ = false;
+  Time chosenAt_ = 0;
+  Time lastMotionTook_ = 0;
+  static constexpr int kRoundsBeforeSideways = 3;
+  static constexpr int kMostSidewaysDoublings = 4;
   // When the mover last arrived: its helpers latch to it again only once their pistons are back
   // at rest, and a way down about one of them is not among its motions before.
   Time arrivedAt_ = 0;

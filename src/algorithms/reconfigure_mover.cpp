@@ -150,14 +150,27 @@ void ReconfigureProgram::choose(Context& context) {
   // actuators (a 10 cm module's pistons and latches take seconds) the rounds alone ended first,
   // and the mover walked sideways along a row for hours, each time before the way up was there.
   if (standingVersion_ != newest) standing_ = kUnknown;
-  const bool helpersBackAtRest = context.now() >= arrivedAt_ + pistonWait_;
-  if (!falling && standing_ != kUnknown && candidateDistances_[best] >= standing_ &&
-      (roundsWithoutDescent_ < 3 || !helpersBackAtRest)) {
+  // Each sideways motion in a row doubles the wait before the next, counted in the mover's own
+  // motion times: two movers each in the other's way (one's way down needs the other as a
+  // helper, and the other has only sideways motions, each with the first as its helper) took
+  // turns for ever, the one always moving when the other needed it still. A mover that waits
+  // helps: the other's motion goes, and with it what blocked the way.
+  // A fall that goes no lower is sideways too: a mover that no distance reaches, hanging on the
+  // side of a box, swung between two cells of a layer for hours, each time with the other mover
+  // that needed it as a helper compressed for it.
+  const bool sideways = falling ? candidates_[best].goal.z >= context.cell().z
+                                : standing_ != kUnknown && candidateDistances_[best] >= standing_;
+  const Time backOff =
+      ((Time(1) << std::min(sidewaysMotions_, kMostSidewaysDoublings)) - 1) * lastMotionTook_;
+  const bool waitedEnough = context.now() >= arrivedAt_ + pistonWait_ + backOff;
+  if (sideways && (roundsWithoutDescent_ < kRoundsBeforeSideways || !waitedEnough)) {
     ++roundsWithoutDescent_;
     phase_ = Phase::kWaiting;
     return retryLater(context);
   }
   roundsWithoutDescent_ = 0;
+  chosenSideways_ = sideways;
+  chosenAt_ = context.now();
   chosen_ = candidates_[best];
   waitsForTheWay_ = 0;
   chosenDistance_ = candidateDistances_[best];
@@ -269,6 +282,8 @@ void ReconfigureProgram::onMotionEnded(Context& context, const MotionEnded& ende
     return;
   }
   ++motions_;
+  sidewaysMotions_ = chosenSideways_ ? sidewaysMotions_ + 1 : 0;
+  lastMotionTook_ = context.now() - chosenAt_;
   leavingFor_.reset();
   givenUp_.reset();
   failedGoals_.clear();

@@ -149,6 +149,23 @@ TEST_F(ActuatorsRun, AMoverWaitsForItsHelpersToLatchAgainBeforeGoingSideways) {
   }
 }
 
+// A mover that no distance reaches falls towards the ground; on the side of the arch's box, at
+// layer 1, its only motions swung it between two cells about one pivot, each with the other
+// mover as a helper, whose own way up needed it still: for twenty hours of simulated time. A
+// sideways motion, a fall that goes no lower included, now waits twice as long as the last, in
+// motion times, and the other mover's motion goes meanwhile (these three stalled so).
+TEST_F(ActuatorsRun, AMoverThatSwingsSidewaysWaitsLongerEachTime) {
+  const std::string scene = std::string(DATOMSIM_SOURCE_DIR) + "/scenes/reshape-arch-hole2.json";
+  for (const char* run :
+       {"sma-spring+electromagnetic --seed 2", "sma-spring+electromagnetic --seed 16",
+        "sma-spring+electrostatic --seed 5"}) {
+    const Outcome outcome = datomsim("run " + scene + " --program reconfigure --actuators " + run +
+                                     " --size 10cm --out " + path("arch.json"));
+    ASSERT_EQ(outcome.status, 0) << run << "\n" << outcome.output.substr(0, 2000);
+    EXPECT_TRUE(nlohmann::json::parse(readText(path("arch.json")))["success"].get<bool>()) << run;
+  }
+}
+
 // On the arch's thin top, a helper's compressed piston lets go of the latches its request came
 // by, and its answer may find no way back within its hops. The mover whose answers do not come
 // tries the motion (the rules refuse it unless every helper is compressed): with 10 cm ribbons

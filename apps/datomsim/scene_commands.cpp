@@ -7,12 +7,9 @@
 
 #include "arguments.h"
 #include "commands.h"
-#include "frontend/generation_memory.h"
+#include "frontend/scene_generators.h"
 #include "geometry/lattice.h"
 #include "io/scene_file.h"
-#include "scene/box.h"
-#include "scene/paper_arch.h"
-#include "scene/random_scene.h"
 #include "target/target.h"
 #include "world/bounds.h"
 
@@ -117,101 +114,63 @@ void addGenerate(CLI::App& app, const Reporter& reporter) {
   addReshapeGenerator(*generate, reporter);
 
   struct BoxArguments {
-    std::string size, origin = "0,0,0", grid;
-    bool upright = false;
+    frontend::BoxArguments box;
     GenerateArguments generate;
   };
   auto box = std::make_shared<BoxArguments>();
   CLI::App* boxCommand = addGenerator(*generate, "box", "A box of modules", box->generate);
-  boxCommand->add_option("--size", box->size, "Size X,Y,Z in cells")->required();
-  boxCommand->add_option("--origin", box->origin, "Corner cell x,y,z")->capture_default_str();
-  boxCommand->add_option("--grid", box->grid, "Declare a grid X,Y,Z (default: none)");
-  boxCommand->add_flag("--upright", box->upright,
+  boxCommand->add_option("--size", box->box.size, "Size X,Y,Z in cells")->required();
+  boxCommand->add_option("--origin", box->box.origin, "Corner cell x,y,z")->capture_default_str();
+  boxCommand->add_option("--grid", box->box.grid, "Declare a grid X,Y,Z (default: none)");
+  boxCommand->add_flag("--upright", box->box.upright,
                        "Stand straight up instead of leaning with the skew coordinates: each "
                        "layer's x and y less floor(z/2) (docs/coordinates.md); fills a grid of "
                        "its own size");
   addExample(*boxCommand, "generate box --size 10,10,4 --upright -o tall.json");
   boxCommand->callback([box, &reporter] {
-    scene::BoxOptions options;
-    options.upright = box->upright;
-    options.origin = parseCell("--origin", box->origin);
-    if (!box->grid.empty()) options.gridSize = parseCell("--grid", box->grid);
-    const geometry::Cell size = parseCell("--size", box->size);
-    frontend::refuseBeyondMemory(int64_t{size.x} * size.y * size.z, "a box of " + box->size + " is",
-                                 frontend::kBoxBytesPerModule);
-    auto world = scene::box(size, options);
-    if (!world.ok() && options.gridSize && !options.upright && size.z > 1) {
-      // A box of several layers leans in the skew coordinates, by floor(z/2) cells on layer z:
-      // the grid it needs is wider than the box. Say so, and what would fit.
-      const int32_t lean = geometry::floorHalf(options.origin.z + size.z - 1);
-      const geometry::Cell needed{options.origin.x + size.x + lean,
-                                  options.origin.y + size.y + lean, options.origin.z + size.z};
-      throw UsageError(fmt::format(
-          "{}; a box of {} layers leans by floor(z/2) cells on layer z (docs/coordinates.md): "
-          "add --upright for one that stands straight, or give --grid {}",
-          world.error(), size.z, geometry::toString(needed)));
-    }
-    writeGenerated(unwrap(std::move(world)), "box " + box->size, box->generate, reporter);
+    frontend::GeneratedWorld made = frontend::generateBox(box->box);
+    writeGenerated(std::move(made.world), made.name, box->generate, reporter);
   });
 
   struct ArchArguments {
-    int hole = 2;
+    frontend::ArchArguments arch;
     GenerateArguments generate;
   };
   auto arch = std::make_shared<ArchArguments>();
   CLI::App* archCommand = addGenerator(
       *generate, "arch", "The paper's experiment: a 7x7x2 box under an arch (section VII)",
       arch->generate);
-  archCommand->add_option("--hole", arch->hole, "Height of the arch's hole: 2 or 1")
+  archCommand->add_option("--hole", arch->arch.hole, "Height of the arch's hole: 2 or 1")
       ->check(CLI::IsMember({1, 2}))
       ->capture_default_str();
   addExample(*archCommand, "generate arch --hole 1 -o arch1.json");
   archCommand->callback([arch, &reporter] {
-    writeGenerated(unwrap(scene::paperArch(arch->hole)),
-                   fmt::format("paper arch, hole {} high", arch->hole), arch->generate, reporter);
+    frontend::GeneratedWorld made = frontend::generateArch(arch->arch);
+    writeGenerated(std::move(made.world), made.name, arch->generate, reporter);
   });
 
   struct RandomArguments {
-    std::string seed = "1";
-    size_t count = 100;
-    std::string grid;
-    int height = 3;
-    bool orientations = false;
+    frontend::RandomArguments random;
     GenerateArguments generate;
   };
   auto random = std::make_shared<RandomArguments>();
   CLI::App* randomCommand =
       addGenerator(*generate, "random", "A random connected scene grown on the ground from a seed",
                    random->generate);
-  randomCommand->add_option("--seed", random->seed, "Seed")->capture_default_str();
-  randomCommand->add_option("--count", random->count, "Number of modules")
+  randomCommand->add_option("--seed", random->random.seed, "Seed")->capture_default_str();
+  randomCommand->add_option("--count", random->random.count, "Number of modules")
       ->check(kPositiveInteger)
       ->capture_default_str();
-  randomCommand->add_option("--grid", random->grid, "Declare a grid X,Y,Z (default: none)");
-  randomCommand->add_option("--height", random->height, "Layers the scene may use")
+  randomCommand->add_option("--grid", random->random.grid, "Declare a grid X,Y,Z (default: none)");
+  randomCommand->add_option("--height", random->random.height, "Layers the scene may use")
       ->check(kPositiveInteger)
       ->capture_default_str();
-  randomCommand->add_flag("--random-orientations", random->orientations,
+  randomCommand->add_flag("--random-orientations", random->random.orientations,
                           "Draw each module's orientation");
   addExample(*randomCommand, "generate random --count 100 --seed 7 --grid 12,12,6 -o random.json");
   randomCommand->callback([random, &reporter] {
-    scene::RandomOptions options;
-    if (!random->grid.empty()) options.gridSize = parseCell("--grid", random->grid);
-    options.maxHeight = random->height;
-    options.randomOrientations = random->orientations;
-    const uint64_t seed = parseSeed("--seed", random->seed);
-    frontend::refuseBeyondMemory(int64_t(std::min<size_t>(random->count, INT64_MAX)),
-                                 fmt::format("a random scene of --count {} is", random->count),
-                                 frontend::kRandomBytesPerModule);
-    world::World world = unwrap(scene::random(seed, random->count, options));
-    if (!options.gridSize) {
-      // Grown from 0,0,0 every way; moved so that its grid coordinates start at 0, as a grid
-      // (VisibleSim's, or one given later) counts them.
-      const auto [low, high] = gridExtent(world);
-      world = rebuilt(world, world.bounds(), {-low.x, -low.y, 0});
-    }
-    writeGenerated(std::move(world), fmt::format("random, seed {}", seed), random->generate,
-                   reporter);
+    frontend::GeneratedWorld made = frontend::generateRandom(random->random);
+    writeGenerated(std::move(made.world), made.name, random->generate, reporter);
   });
 }
 

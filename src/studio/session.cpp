@@ -15,6 +15,7 @@
 #include "io/json_scene.h"
 #include "io/visiblesim_xml.h"
 #include "record/trace_writer.h"
+#include "studio/request_fields.h"
 
 namespace datomsim::studio {
 
@@ -25,49 +26,12 @@ using Json = nlohmann::json;
 namespace {
 
 constexpr std::string_view kOperations =
-    "scene, add, remove, undo, redo, save, open, moves, run, advance, stop";
+    "scene, add, remove, undo, redo, save, open, generate, moves, run, advance, stop";
 
 // The run's arguments a request may give, by the command line's names (without the dashes).
 constexpr std::string_view kRunKeys =
     "program, goal, start, seed, param, rules, attachment, connectivity, max-motions, delay-ms, "
     "jitter-ms, until, timeout, gravity";
-
-std::string typeName(const Json& value) {
-  return value.is_string() ? "text" : std::string(value.type_name());
-}
-
-const std::string& text(const Json& request, const char* key) {
-  const Json& value = request.at(key);
-  if (!value.is_string()) {
-    throw UsageError(fmt::format("\"{}\" must be text, got {}", key, typeName(value)));
-  }
-  return value.get_ref<const std::string&>();
-}
-
-double number(const Json& request, const char* key) {
-  const Json& value = request.at(key);
-  if (!value.is_number()) {
-    throw UsageError(fmt::format("\"{}\" must be a number, got {}", key, typeName(value)));
-  }
-  return value.get<double>();
-}
-
-// A cell as the command line types it ("x,y,z") or as three integers.
-Cell cellOf(const Json& request, const char* key) {
-  if (!request.contains(key)) throw UsageError(fmt::format("\"{}\": a cell is needed", key));
-  const Json& value = request.at(key);
-  if (value.is_string()) return frontend::parseCell(key, value.get<std::string>());
-  if (value.is_array() && value.size() == 3) {
-    std::string typed;
-    for (const Json& coordinate : value) {
-      if (!coordinate.is_number_integer()) break;
-      typed += (typed.empty() ? "" : ",") + std::to_string(coordinate.get<int64_t>());
-    }
-    if (typed.size() && value[2].is_number_integer()) return frontend::parseCell(key, typed);
-  }
-  throw UsageError(fmt::format("\"{}\" must be a cell, \"x,y,z\" or [x, y, z] in integers, got {}",
-                               key, value.dump()));
-}
 
 // A reply's text: its values, and the trace records (already JSON) spliced in as they are.
 std::string replyText(Json reply, const std::string& records) {
@@ -102,6 +66,7 @@ std::string Session::handle(std::string_view request) {
     if (op == "redo") return replyText(undo(redo_, undo_), "");
     if (op == "save") return replyText(save(parsed), "");
     if (op == "open") return replyText(open(parsed), "");
+    if (op == "generate") return replyText(generate(parsed), "");
     if (op == "moves") return replyText(moves(parsed), "");
     if (op == "run") {
       Json reply = startRun(parsed);
@@ -215,13 +180,17 @@ Json Session::open(const Json& request) {
   } else {
     throw UsageError(name + ": a scene file is .json or .xml");
   }
-  undo_.push_back({std::move(scene_), std::move(sceneName_)});
-  redo_.clear();
-  scene_ = std::move(opened);
-  sceneName_ = name;
+  replaceScene(std::move(opened), name);
   Json reply;
   reply["modules"] = scene_.world.size();
   return reply;
+}
+
+void Session::replaceScene(io::Scene scene, std::string name) {
+  undo_.push_back({std::move(scene_), std::move(sceneName_)});
+  redo_.clear();
+  scene_ = std::move(scene);
+  sceneName_ = std::move(name);
 }
 
 // Every rule of every pivot around a cell, valid or refused with its reason (`datomsim moves`).
@@ -267,10 +236,7 @@ Json Session::startRun(const Json& request) {
       args.rules.connectivity = text(request, "connectivity");
       args.connectivityGiven = true;
     } else if (key == "max-motions") {
-      if (!value.is_number_integer()) {
-        throw UsageError("\"max-motions\" must be an integer, got " + value.dump());
-      }
-      args.maxMotions = value.get<int64_t>();
+      args.maxMotions = integer(request, "max-motions");
     } else if (key == "delay-ms") {
       args.delayMs = number(request, "delay-ms");
     } else if (key == "jitter-ms") {

@@ -52,6 +52,10 @@ class Session {
   Json undo(std::vector<Snapshot>& from, std::vector<Snapshot>& to);
   Json save(const Json& request) const;
   Json open(const Json& request);
+  // A scene made as `datomsim generate KIND` makes it (session_generate.cpp).
+  Json generate(const Json& request);
+  // The scene replaced by another, the old one kept for undo.
+  void replaceScene(io::Scene scene, std::string name);
   Json moves(const Json& request) const;
   Json startRun(const Json& request);
   Json advance(const Json& request);

@@ -122,6 +122,24 @@ try {
     await page.click('#ds-moves-panel');
   });
 
+  await check('a new scene generated from the bar, a bad option refused, then undone', async () => {
+    await page.selectOption('#ds-generate-kind', 'arch');
+    await page.fill('#ds-generate-options', 'hole=3');
+    await page.click('#ds-generate');
+    await waitFor(() => window.datomsimStudio.state().error !== null);
+    const refused = await state();
+    assert(refused.error.includes('--hole 3'), refused.error);
+    assert(refused.modules === 131, `modules ${refused.modules}`);
+    await page.fill('#ds-generate-options', 'hole=2');
+    await page.click('#ds-generate');
+    await waitFor(() => window.datomsimStudio.state().modules === 130);
+    const modules = await page.evaluate(() => window.datomsimViewer.modules());
+    assert(modules.some((m) => m.cell.join(',') === '6,5,2'), 'the mobile of the arch with hole 2 is not at 6,5,2');
+    await page.screenshot({ path: join(shots, 'studio-generated.png') });
+    await page.click('#ds-undo');
+    await waitFor(() => window.datomsimStudio.state().modules === 131);
+  });
+
   await check('the scene saved as JSON is the scene file, and opened again', async () => {
     const [download] = await Promise.all([page.waitForEvent('download'), page.click('#ds-save-json')]);
     const saved = join(shots, 'studio-saved.json');

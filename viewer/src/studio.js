@@ -4,6 +4,7 @@
 // nothing.
 import { App } from './app.js';
 import { NEIGHBOUR_OFFSETS, addCells, nearestDirection } from './lattice.js';
+import { GENERATE_EXAMPLES, generateFields } from './generate_fields.js';
 import { parseTrace } from './trace.js';
 
 const STUDIO_STYLE = `
@@ -57,6 +58,15 @@ export function startStudio(root) {
   const saveJson = element('button', { id: 'ds-save-json', textContent: 'Save JSON' });
   const saveXml = element('button', { id: 'ds-save-xml', textContent: 'Save XML' });
   const openInput = element('input', { id: 'ds-open', type: 'file', accept: '.json,.xml' });
+  // A new scene as `datomsim generate KIND` makes it, its options as KEY=VALUE words.
+  const generateKind = element('select', { id: 'ds-generate-kind' });
+  for (const kind of Object.keys(GENERATE_EXAMPLES)) generateKind.append(element('option', { value: kind, textContent: kind }));
+  const generateOptions = element('input', { id: 'ds-generate-options', placeholder: GENERATE_EXAMPLES.box });
+  generateOptions.style.width = '150px';
+  generateKind.addEventListener('change', () => {
+    generateOptions.placeholder = GENERATE_EXAMPLES[generateKind.value];
+  });
+  const generateButton = element('button', { id: 'ds-generate', textContent: 'New', title: 'A new scene, as datomsim generate makes it (undone with Undo)' });
   openInput.style.width = '170px';
   const movesPanel = element('div', { id: 'ds-moves-panel', className: 'ds-moves' });
   movesPanel.hidden = true;
@@ -70,6 +80,7 @@ export function startStudio(root) {
     element('span', { className: 'ds-group' }, labelled('cell', cell), addButton, removeButton,
       movesButton, undoButton, redoButton),
     element('span', { className: 'ds-group' }, saveJson, saveXml, openInput),
+    element('span', { className: 'ds-group' }, labelled('new', generateKind), generateOptions, generateButton),
     status,
   );
   const stage = element('div', { id: 'datomsim-viewer' });
@@ -142,7 +153,7 @@ export function startStudio(root) {
     }
     stepButton.disabled = playButton.disabled = stopButton.disabled = !state.running;
     runButton.disabled = state.running;
-    for (const button of [addButton, removeButton, undoButton, redoButton]) button.disabled = state.running;
+    for (const button of [addButton, removeButton, undoButton, redoButton, generateButton]) button.disabled = state.running;
     openInput.disabled = state.running;
   }
 
@@ -293,6 +304,11 @@ export function startStudio(root) {
     link.click();
     URL.revokeObjectURL(link.href);
   };
+  generateButton.addEventListener('click', async () => {
+    const request = { op: 'generate', kind: generateKind.value, ...generateFields(generateOptions.value) };
+    if (took(await ask(request))) await loadScene();
+  });
+
   saveJson.addEventListener('click', save('json'));
   saveXml.addEventListener('click', save('xml'));
   openInput.addEventListener('change', async () => {

@@ -2,6 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
+#include <cctype>
+
 #include "frontend/arguments.h"
 #include "frontend/usage_error.h"
 
@@ -44,6 +48,31 @@ bool flag(const Json& request, const char* key) {
     throw UsageError(fmt::format("\"{}\" must be true or false, got {}", key, value.dump()));
   }
   return value.get<bool>();
+}
+
+Color colorOf(const Json& request, const char* key) {
+  if (!request.contains(key)) throw UsageError(fmt::format("\"{}\": a colour is needed", key));
+  const Json& value = request.at(key);
+  std::array<int64_t, 3> channels{-1, -1, -1};
+  if (value.is_array() && value.size() == 3) {
+    for (size_t i = 0; i < 3; ++i) {
+      if (value[i].is_number_integer()) channels[i] = value[i].get<int64_t>();
+    }
+  } else if (value.is_string()) {
+    const std::string& hex = value.get_ref<const std::string&>();
+    const bool isHex =
+        hex.size() == 7 && hex[0] == '#' && std::all_of(hex.begin() + 1, hex.end(), [](char c) {
+          return std::isxdigit(static_cast<unsigned char>(c));
+        });
+    for (size_t i = 0; isHex && i < 3; ++i)
+      channels[i] = std::stoi(hex.substr(1 + 2 * i, 2), nullptr, 16);
+  }
+  if (std::any_of(channels.begin(), channels.end(), [](int64_t c) { return c < 0 || c > 255; })) {
+    throw UsageError(fmt::format(
+        "\"{}\" must be a colour, [r, g, b] in integers 0 to 255 or \"#rrggbb\", got {}", key,
+        value.dump()));
+  }
+  return Color{uint8_t(channels[0]), uint8_t(channels[1]), uint8_t(channels[2])};
 }
 
 geometry::Cell cellOf(const Json& request, const char* key) {

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "datomsim/values.h"
 #include "geometry/cell.h"
 
 namespace datomsim::studio {
@@ -17,6 +18,9 @@ const std::string& text(const nlohmann::json& request, const char* key);
 double number(const nlohmann::json& request, const char* key);
 int64_t integer(const nlohmann::json& request, const char* key);
 bool flag(const nlohmann::json& request, const char* key);
+
+// A colour as three integers 0..255, [r, g, b], or as a page's colour input gives it, "#rrggbb".
+Color colorOf(const nlohmann::json& request, const char* key);
 
 // A cell as the command line types it ("x,y,z") or as three integers.
 geometry::Cell cellOf(const nlohmann::json& request, const char* key);

@@ -26,7 +26,7 @@ using Json = nlohmann::json;
 namespace {
 
 constexpr std::string_view kOperations =
-    "scene, add, remove, undo, redo, save, open, generate, moves, run, advance, stop";
+    "scene, add, remove, recolour, undo, redo, save, open, generate, moves, run, advance, stop";
 
 // The run's arguments a request may give, by the command line's names (without the dashes).
 constexpr std::string_view kRunKeys =
@@ -62,6 +62,7 @@ std::string Session::handle(std::string_view request) {
     const std::string& op = text(parsed, "op");
     if (op == "scene") return replyText(describe(), "");
     if (op == "add" || op == "remove") return replyText(edit(parsed, op == "add"), "");
+    if (op == "recolour") return replyText(recolour(parsed), "");
     if (op == "undo") return replyText(undo(undo_, redo_), "");
     if (op == "redo") return replyText(undo(redo_, undo_), "");
     if (op == "save") return replyText(save(parsed), "");
@@ -136,6 +137,22 @@ Json Session::edit(const Json& request, bool add) {
   undo_.push_back(std::move(before));
   redo_.clear();
   reply["modules"] = world.size();
+  return reply;
+}
+
+Json Session::recolour(const Json& request) {
+  if (running()) throw UsageError("the scene cannot change during a run: stop it first");
+  const Cell cell = cellOf(request, "cell");
+  const world::Module* there = scene_.world.moduleAt(cell);
+  if (!there) throw UsageError("cell " + geometry::toString(cell) + " holds no module");
+  const Color color = colorOf(request, "rgb");
+  Snapshot before{scene_, sceneName_};
+  frontend::check(scene_.world.setColor(there->id, color));
+  undo_.push_back(std::move(before));
+  redo_.clear();
+  Json reply;
+  reply["id"] = there->id.value;
+  reply["rgb"] = {color.r, color.g, color.b};
   return reply;
 }
 

@@ -44,6 +44,7 @@ class Session {
   // Each operation: its reply's values, or a frontend::UsageError naming what is wrong.
   Json describe() const;
   Json edit(const Json& request, bool add);
+  Json recolour(const Json& request);
   // A scene and the name runs give it, as the history keeps them.
   struct Snapshot {
     io::Scene scene;

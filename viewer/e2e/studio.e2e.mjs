@@ -52,8 +52,8 @@ try {
   const errors = [];
   page.on('pageerror', (error) => errors.push(String(error)));
   const state = () => page.evaluate(() => window.datomsimStudio.state());
-  const waitFor = (predicate) =>
-    page.waitForFunction(predicate, null, { timeout: 30000, polling: 100 });
+  const waitFor = (predicate, argument = null) =>
+    page.waitForFunction(predicate, argument, { timeout: 30000, polling: 100 });
 
   await check('the page opens with the scene', async () => {
     await page.goto(url);
@@ -92,6 +92,21 @@ try {
     await page.screenshot({ path: join(shots, 'studio-added.png') });
     await page.click('#ds-undo');
     await waitFor(() => window.datomsimStudio.state().modules === 131);
+  });
+
+  await check('a module recoloured from the bar, then undone', async () => {
+    const first = (await page.evaluate(() => window.datomsimViewer.modules()))[0];
+    await page.fill('#ds-cell', first.cell.join(','));
+    await page.$eval('#ds-colour', (input) => {
+      input.value = '#20c0ff';
+    });
+    await page.click('#ds-recolour');
+    await waitFor(() => window.datomsimViewer.modules()[0].rgb.join(',') === '32,192,255');
+    await page.click('#ds-undo');
+    await waitFor(
+      (rgb) => window.datomsimViewer.modules()[0].rgb.join(',') === rgb,
+      first.rgb.join(','),
+    );
   });
 
   await check('a bad cell is refused with the message, and changes nothing', async () => {

@@ -46,11 +46,12 @@ export function viewerApi(app) {
       const m = app.frame.modules[app.timeline.indexOfId.get(id)];
       return { position: m.position.toArray(), piston: m.piston, fraction: m.fraction, cell: m.cell.slice() };
     },
-    // Every module at the current time: id, cell (the one it holds), position, piston.
+    // Every module at the current time: id, cell (the one it holds), colour, position, piston.
     modules: () =>
       app.frame.modules.map((m) => ({
         id: m.id,
         cell: m.cell.slice(),
+        rgb: m.rgb.slice(),
         position: m.position.toArray(),
         piston: m.piston,
         fraction: m.fraction,

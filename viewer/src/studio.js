@@ -52,6 +52,8 @@ export function startStudio(root) {
   const cell = element('input', { id: 'ds-cell', placeholder: 'x,y,z' });
   const addButton = element('button', { id: 'ds-add', textContent: 'Add' });
   const removeButton = element('button', { id: 'ds-remove', textContent: 'Remove' });
+  const colour = element('input', { id: 'ds-colour', type: 'color', value: '#ff8000', title: 'The colour Colour gives' });
+  const colourButton = element('button', { id: 'ds-recolour', textContent: 'Colour', title: 'Give the module in the cell the colour beside' });
   const undoButton = element('button', { id: 'ds-undo', textContent: 'Undo' });
   const redoButton = element('button', { id: 'ds-redo', textContent: 'Redo' });
   const movesButton = element('button', { id: 'ds-moves', textContent: 'Moves', title: 'Every rule of every pivot around the cell, valid or refused with its reason' });
@@ -78,7 +80,7 @@ export function startStudio(root) {
       labelled('start', start), labelled('seed', seed), runButton),
     element('span', { className: 'ds-group' }, stepButton, playButton, speed, stopButton),
     element('span', { className: 'ds-group' }, labelled('cell', cell), addButton, removeButton,
-      movesButton, undoButton, redoButton),
+      colour, colourButton, movesButton, undoButton, redoButton),
     element('span', { className: 'ds-group' }, saveJson, saveXml, openInput),
     element('span', { className: 'ds-group' }, labelled('new', generateKind), generateOptions, generateButton),
     status,
@@ -153,7 +155,7 @@ export function startStudio(root) {
     }
     stepButton.disabled = playButton.disabled = stopButton.disabled = !state.running;
     runButton.disabled = state.running;
-    for (const button of [addButton, removeButton, undoButton, redoButton, generateButton]) button.disabled = state.running;
+    for (const button of [addButton, removeButton, colourButton, undoButton, redoButton, generateButton]) button.disabled = state.running;
     openInput.disabled = state.running;
   }
 
@@ -266,11 +268,13 @@ export function startStudio(root) {
   stopButton.addEventListener('click', stop);
   const edit = (op) => async () => {
     const request = { op };
-    if (op === 'add' || op === 'remove') request.cell = cell.value.trim();
+    if (op === 'add' || op === 'remove' || op === 'recolour') request.cell = cell.value.trim();
+    if (op === 'recolour') request.rgb = colour.value;
     if (took(await ask(request))) await loadScene();
   };
   addButton.addEventListener('click', edit('add'));
   removeButton.addEventListener('click', edit('remove'));
+  colourButton.addEventListener('click', edit('recolour'));
   undoButton.addEventListener('click', edit('undo'));
   redoButton.addEventListener('click', edit('redo'));
 

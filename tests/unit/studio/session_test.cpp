@@ -93,6 +93,35 @@ TEST(StudioSession, AnEditIsUndoneAndRedone) {
   EXPECT_EQ(scene.at("scene").at("modules").size(), modules);
 }
 
+// A module recoloured keeps its colour in the scene file; the edit is undone like the others.
+TEST(StudioSession, AModuleIsRecolouredAndTheColourUndone) {
+  Session session(arch(), "arch");
+  const world::Module top = session.scene().world.modules().back();  // a copy: undo moves scenes
+  const Color before = top.color;
+  const std::string cell = geometry::toString(top.cell);
+  const json hex = ask(session, {{"op", "recolour"}, {"cell", cell}, {"rgb", "#ff8000"}});
+  ASSERT_TRUE(hex.at("ok").get<bool>()) << hex;
+  EXPECT_EQ(hex.at("rgb"), json::array({255, 128, 0}));
+  EXPECT_EQ(session.scene().world.moduleAt(top.cell)->color, (Color{255, 128, 0}));
+  const json saved = json::parse(io::toJson(session.scene()));
+  EXPECT_EQ(saved.at("modules").back().at("color"), json::array({255, 128, 0}));
+  const json triple = ask(session, {{"op", "recolour"}, {"cell", cell}, {"rgb", {1, 2, 3}}});
+  ASSERT_TRUE(triple.at("ok").get<bool>()) << triple;
+  EXPECT_EQ(session.scene().world.moduleAt(top.cell)->color, (Color{1, 2, 3}));
+  ASSERT_TRUE(ask(session, {{"op", "undo"}}).at("ok").get<bool>());
+  ASSERT_TRUE(ask(session, {{"op", "undo"}}).at("ok").get<bool>());
+  EXPECT_EQ(session.scene().world.moduleAt(top.cell)->color, before);
+
+  refused(session, R"({"op": "recolour", "cell": "0,0,1", "rgb": "#ffffff"})", "holds no module");
+  for (const char* bad : {R"("#12345")", R"("red")", "[256, 0, 0]", "[1, 2]", "[1.5, 2, 3]"}) {
+    refused(session,
+            std::string(R"({"op": "recolour", "cell": ")") + cell + R"(", "rgb": )" + bad + "}",
+            "\"rgb\" must be a colour, [r, g, b] in integers 0 to 255 or \"#rrggbb\"");
+  }
+  refused(session, std::string(R"({"op": "recolour", "cell": ")") + cell + "\"}",
+          "\"rgb\": a colour is needed");
+}
+
 TEST(StudioSession, TheSceneIsSavedAndOpenedAsItsFilesAre) {
   Session session(arch(), "arch");
   const json saved = ask(session, {{"op", "save"}, {"format", "json"}});

@@ -26,7 +26,8 @@ using Json = nlohmann::json;
 namespace {
 
 constexpr std::string_view kOperations =
-    "scene, add, remove, recolour, undo, redo, save, open, generate, moves, run, advance, stop";
+    "scene, add, remove, recolour, undo, redo, save, open, target, generate, moves, run, advance, "
+    "stop";
 
 // The run's arguments a request may give, by the command line's names (without the dashes).
 constexpr std::string_view kRunKeys =
@@ -67,6 +68,7 @@ std::string Session::handle(std::string_view request) {
     if (op == "redo") return replyText(undo(redo_, undo_), "");
     if (op == "save") return replyText(save(parsed), "");
     if (op == "open") return replyText(open(parsed), "");
+    if (op == "target") return replyText(attachTargets(parsed), "");
     if (op == "generate") return replyText(generate(parsed), "");
     if (op == "moves") return replyText(moves(parsed), "");
     if (op == "run") {
@@ -187,20 +189,32 @@ Json Session::save(const Json& request) const {
 Json Session::open(const Json& request) {
   if (running()) throw UsageError("the scene cannot change during a run: stop it first");
   const std::string& name = text(request, "name");
-  const std::string& content = text(request, "text");
-  const std::string extension = std::filesystem::path(name).extension().string();
-  io::Scene opened;
-  if (extension == ".json") {
-    opened = frontend::unwrap(io::parseJsonScene(content, name));
-  } else if (extension == ".xml") {
-    opened = frontend::unwrap(io::parseVisibleSimXml(content, name));
-  } else {
-    throw UsageError(name + ": a scene file is .json or .xml");
-  }
-  replaceScene(std::move(opened), name);
+  replaceScene(sceneFile(name, text(request, "text")), name);
   Json reply;
   reply["modules"] = scene_.world.size();
   return reply;
+}
+
+// The targets of a scene file's text in place of the scene's (`generate --target FILE`: its
+// modules are not taken), an edit like the others.
+Json Session::attachTargets(const Json& request) {
+  if (running()) throw UsageError("the scene cannot change during a run: stop it first");
+  const std::string& name = text(request, "name");
+  io::Scene file = sceneFile(name, text(request, "text"));
+  if (file.targets.empty()) throw UsageError(name + ": has no targets to attach");
+  io::Scene scene = scene_;
+  scene.targets = std::move(file.targets);
+  replaceScene(std::move(scene), sceneName_);
+  Json reply;
+  reply["targets"] = scene_.targets.size();
+  return reply;
+}
+
+io::Scene Session::sceneFile(const std::string& name, const std::string& content) {
+  const std::string extension = std::filesystem::path(name).extension().string();
+  if (extension == ".json") return frontend::unwrap(io::parseJsonScene(content, name));
+  if (extension == ".xml") return frontend::unwrap(io::parseVisibleSimXml(content, name));
+  throw UsageError(name + ": a scene file is .json or .xml");
 }
 
 void Session::replaceScene(io::Scene scene, std::string name) {

@@ -53,6 +53,9 @@ class Session {
   Json undo(std::vector<Snapshot>& from, std::vector<Snapshot>& to);
   Json save(const Json& request) const;
   Json open(const Json& request);
+  Json attachTargets(const Json& request);
+  // A scene file's text, read as its name's extension says.
+  static io::Scene sceneFile(const std::string& name, const std::string& content);
   // A scene made as `datomsim generate KIND` makes it (session_generate.cpp).
   Json generate(const Json& request);
   // The scene replaced by another, the old one kept for undo.

@@ -168,6 +168,14 @@ try {
     await waitFor(() => window.datomsimStudio.state().modules === 131);
   });
 
+  await check('a target file gives the scene its shape, drawn, then undone', async () => {
+    await page.setInputFiles('#ds-target', join(repository, 'scenes', 'reshape-arch-hole2.json'));
+    await waitFor(() => window.datomsimViewer.targets().shapes === 1);
+    await page.screenshot({ path: join(shots, 'studio-target.png') });
+    await page.click('#ds-undo');
+    await waitFor(() => window.datomsimViewer.targets().shapes === 0);
+  });
+
   await check('follow-gradient runs live: stepped, played, stopped, as the command line runs it', async () => {
     await page.selectOption('#ds-program', 'follow-gradient');
     await page.fill('#ds-goal', '6,5,2');

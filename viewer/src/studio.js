@@ -70,6 +70,9 @@ export function startStudio(root) {
   });
   const generateButton = element('button', { id: 'ds-generate', textContent: 'New', title: 'A new scene, as datomsim generate makes it (undone with Undo)' });
   openInput.style.width = '170px';
+  // A scene file whose targets the scene takes (its modules are not taken).
+  const targetInput = element('input', { id: 'ds-target', type: 'file', accept: '.json,.xml', title: 'A scene file whose targets the scene takes, its modules not' });
+  targetInput.style.width = '170px';
   const movesPanel = element('div', { id: 'ds-moves-panel', className: 'ds-moves' });
   movesPanel.hidden = true;
   const status = element('div', { id: 'ds-status', className: 'ds-status', textContent: 'connecting...' });
@@ -81,7 +84,7 @@ export function startStudio(root) {
     element('span', { className: 'ds-group' }, stepButton, playButton, speed, stopButton),
     element('span', { className: 'ds-group' }, labelled('cell', cell), addButton, removeButton,
       colour, colourButton, movesButton, undoButton, redoButton),
-    element('span', { className: 'ds-group' }, saveJson, saveXml, openInput),
+    element('span', { className: 'ds-group' }, saveJson, saveXml, openInput, labelled('target', targetInput)),
     element('span', { className: 'ds-group' }, labelled('new', generateKind), generateOptions, generateButton),
     status,
   );
@@ -156,7 +159,7 @@ export function startStudio(root) {
     stepButton.disabled = playButton.disabled = stopButton.disabled = !state.running;
     runButton.disabled = state.running;
     for (const button of [addButton, removeButton, colourButton, undoButton, redoButton, generateButton]) button.disabled = state.running;
-    openInput.disabled = state.running;
+    openInput.disabled = targetInput.disabled = state.running;
   }
 
   const token = new URLSearchParams(window.location.search).get('token');
@@ -320,6 +323,14 @@ export function startStudio(root) {
     if (!file) return;
     const reply = await ask({ op: 'open', name: file.name, text: await file.text() });
     openInput.value = '';
+    if (took(reply)) await loadScene();
+  });
+
+  targetInput.addEventListener('change', async () => {
+    const file = targetInput.files[0];
+    if (!file) return;
+    const reply = await ask({ op: 'target', name: file.name, text: await file.text() });
+    targetInput.value = '';
     if (took(reply)) await loadScene();
   });
 

@@ -150,6 +150,28 @@ TEST(StudioSession, TheSceneIsSavedAndOpenedAsItsFilesAre) {
   EXPECT_NE(header.find("\"description\":\"arch\""), std::string::npos) << header.substr(0, 200);
 }
 
+// A target file's targets replace the scene's, its modules not taken, as `generate --target`
+// attaches them; a run of reconfigure then has its shape; undone like any edit.
+TEST(StudioSession, ATargetFileGivesTheSceneItsTargets) {
+  Session session(arch(), "arch");
+  const std::string reshape = io::toJson(
+      *io::readScene(std::string(DATOMSIM_SOURCE_DIR) + "/scenes/reshape-arch-hole2.json"));
+  const std::string modules = json::parse(io::toJson(session.scene())).at("modules").dump();
+  const json attached = ask(session, {{"op", "target"}, {"name", "arch2.json"}, {"text", reshape}});
+  ASSERT_TRUE(attached.at("ok").get<bool>()) << attached;
+  EXPECT_EQ(attached.at("targets").get<size_t>(), 1u);
+  const json scene = json::parse(io::toJson(session.scene()));
+  EXPECT_EQ(scene.at("modules").dump(), modules);
+  EXPECT_EQ(scene.at("targets").dump(), json::parse(reshape).at("targets").dump());
+  refused(session,
+          json{{"op", "target"}, {"name", "arch.json"}, {"text", io::toJson(arch())}}.dump(),
+          "arch.json: has no targets to attach");
+  refused(session, json{{"op", "target"}, {"name", "shape.stl"}, {"text", ""}}.dump(),
+          "shape.stl: a scene file is .json or .xml");
+  ASSERT_TRUE(ask(session, {{"op", "undo"}}).at("ok").get<bool>());
+  EXPECT_TRUE(session.scene().targets.empty());
+}
+
 // The studio's generators are the command line's: the scenes `datomsim generate` wrote into
 // scenes/ (named and described by hand since) come out with the same modules, the reshape case
 // with its target; each replaces the scene as an edit.

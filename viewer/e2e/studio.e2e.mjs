@@ -94,6 +94,37 @@ try {
     await waitFor(() => window.datomsimStudio.state().modules === 131);
   });
 
+  await check('a click on the ground names its cell, a shift-click there adds a module', async () => {
+    // Empty ground cells around the box, clicked where the camera shows them (clear of the bar
+    // and the timeline); one the box hides names the module in front instead.
+    const viewport = page.viewportSize();
+    let ground = null;
+    let at = null;
+    const named = [];
+    await page.focus('#ds-cell');
+    for (const cell of [[4, 0, 0], [0, 4, 0], [8, 4, 0], [4, 8, 0], [0, 0, 0], [8, 0, 0], [0, 8, 0]]) {
+      at = await page.evaluate((c) => window.datomsimViewer.screenPositionOfCell(c), cell);
+      if (at.x < 40 || at.x > viewport.width - 40 || at.y < 160 || at.y > viewport.height - 120) continue;
+      await page.fill('#ds-cell', '');
+      await page.mouse.click(at.x, at.y);
+      named.push(await page.inputValue('#ds-cell'));
+      if (named.at(-1) === cell.join(',')) {
+        ground = cell;
+        break;
+      }
+    }
+    assert(ground, `no ground cell named by its click: ${named.join(' ')}`);
+    await page.keyboard.down('Shift');
+    await page.mouse.click(at.x, at.y);
+    await page.keyboard.up('Shift');
+    await waitFor(() => window.datomsimStudio.state().modules === 132);
+    const modules = await page.evaluate(() => window.datomsimViewer.modules());
+    assert(modules.some((m) => m.cell.join(',') === ground.join(',')), `no module at ${ground}`);
+    await page.screenshot({ path: join(shots, 'studio-ground.png') });
+    await page.click('#ds-undo');
+    await waitFor(() => window.datomsimStudio.state().modules === 131);
+  });
+
   await check('a module recoloured from the bar, then undone', async () => {
     const first = (await page.evaluate(() => window.datomsimViewer.modules()))[0];
     await page.fill('#ds-cell', first.cell.join(','));

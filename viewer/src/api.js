@@ -23,6 +23,7 @@ export function viewerApi(app) {
     selectId: (id) => app.select(app.timeline.indexOfId.get(id) ?? -1),
     selectedInfo: () => (app.panel.hidden ? null : app.panel.innerText),
     screenPositionOf: (id) => app.view.screenPositionOf(app.timeline.indexOfId.get(id)),
+    screenPositionOfCell: (cell) => app.view.screenPositionOfCell(cell),
     setLabels: (on) => app.setLabelsVisible(on),
     setOverlay: (on) => app.setOverlayVisible(on),
     setFocus: (on) => app.setFocus(on),

@@ -14,8 +14,9 @@ export function installAppInput(app) {
     if (moved > 4) return; // a drag of the camera, not a click
     const picked = app.view.pickPoint(event.clientX, event.clientY);
     app.select(picked.index);
-    // The studio's: a click names a cell, a shift-click a face to add a module on.
-    if (app.onPick) app.onPick(picked.index, picked.point, event);
+    // The studio's: a click names a cell (a module's, or the ground's), a shift-click a face or a
+    // ground cell to add a module on.
+    if (app.onPick) app.onPick(picked.index, picked.point, event, picked.groundCell);
   });
   const signal = app.listening.signal;
   window.addEventListener(

@@ -124,11 +124,22 @@ export function startStudio(root) {
   }
 
   // A click on a module puts its cell in the cell field last used (goal, start or cell); a
-  // shift-click on one of its faces adds a module in the cell that face looks at.
+  // shift-click on one of its faces adds a module in the cell that face looks at. On the ground,
+  // the same with the ground layer's cell under the pointer.
   let cellField = cell;
   for (const field of [goal, start, cell]) field.addEventListener('focus', () => (cellField = field));
-  async function picked(index, point, event) {
-    if (index < 0) return;
+  async function picked(index, point, event, groundCell) {
+    if (index < 0) {
+      if (!groundCell) return;
+      if (!event.shiftKey) {
+        cellField.value = groundCell.join(',');
+        return;
+      }
+      if (state.running) return;
+      cell.value = groundCell.join(',');
+      if (took(await ask({ op: 'add', cell: cell.value }))) await loadScene();
+      return;
+    }
     const module = app.frame.modules[index];
     if (!event.shiftKey) {
       cellField.value = module.cell.join(',');

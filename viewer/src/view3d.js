@@ -544,8 +544,9 @@ export class View3D {
     return this.pickPoint(clientX, clientY).index;
   }
 
-  // The module under a point of the screen and where the ray meets it (world coordinates), or
-  // index -1.
+  // The module under a point of the screen and where the ray meets it (world coordinates); or
+  // index -1 and the cell of the ground layer under the point (the nearest cell whose centre's
+  // plane the ray crosses), null when the ray misses that plane.
   pickPoint(clientX, clientY) {
     const rect = this.renderer.domElement.getBoundingClientRect();
     const pointer = new THREE.Vector2(
@@ -555,12 +556,26 @@ export class View3D {
     const raycaster = new THREE.Raycaster();
     raycaster.setFromCamera(pointer, this.camera);
     const hits = raycaster.intersectObjects(this.solidMeshes, false);
-    if (hits.length === 0 || hits[0].instanceId === undefined) return { index: -1, point: null };
+    if (hits.length === 0 || hits[0].instanceId === undefined) {
+      const layerZero = new THREE.Plane(new THREE.Vector3(0, 0, 1), -(Math.SQRT2 / 4) * this.spacing);
+      const at = raycaster.ray.intersectPlane(layerZero, new THREE.Vector3());
+      const groundCell = at
+        ? [Math.round(at.x / this.spacing - 0.5), Math.round(at.y / this.spacing - 0.5), 0]
+        : null;
+      return { index: -1, point: null, groundCell };
+    }
     const hit = hits[0];
     let index = Math.floor(hit.instanceId / this.kinematics.partCount);
     if (hit.object === this.bodyMesh) index = hit.instanceId;
     else if (hit.object === this.connectorMesh) index = Math.floor(hit.instanceId / 12);
     return { index, point: hit.point.toArray() };
+  }
+
+  // Screen position (client coordinates) of a cell's centre.
+  screenPositionOfCell(cell) {
+    const p = new THREE.Vector3(...cellToWorld(cell, this.spacing)).project(this.camera);
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
   }
 
   // Screen position (client coordinates) of a module's centre in the current frame.

@@ -21,6 +21,9 @@
 //     or the engine refuses), moves, and lets them go. Any refusal, of a helper or of the engine
 //     (a reservation, connectivity), makes it let go of its helpers and try again after a random
 //     wait, from its own random stream; a goal that failed weighs more the next time.
+//   - With no way down, a mover goes sideways or up after a few rounds; each such motion in a
+//     row doubles its wait before the next, in its own motion times, so that a mover another
+//     needs as a helper stands still long enough for it.
 //   - A version's seeds are what its modules sense at its start: an open cell that a mover was
 //     passing through then is seeded by that mover when it has left it, at once, in the version
 //     of now; otherwise no version would ever seed it if it was the last open cell.

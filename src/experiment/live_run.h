@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "algorithms/program_kind.h"
 #include "algorithms/registry.h"
@@ -41,6 +42,9 @@ class LiveRun {
   // The time of the next event, if any remains.
   std::optional<Time> nextEventTime() const { return simulator_->nextEventTime(); }
   const sim::Statistics& statistics() const { return simulator_->statistics(); }
+  // The modules whose program is still at work now, by increasing id, and what each is doing (a
+  // program that tells: ProgramSet::unfinished); a live front end shows it as the run goes.
+  std::vector<algorithms::ModuleState> unfinished() const { return programs_->unfinished(); }
   // The trace so far (RunRequest::trace): its header and every record of the events run.
   const std::string& traceSoFar() const { return trace_->text(); }
 

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <utility>
 
@@ -27,7 +29,7 @@ namespace {
 
 constexpr std::string_view kOperations =
     "scene, add, remove, recolour, undo, redo, save, open, target, generate, moves, run, advance, "
-    "stop";
+    "inspect, stop";
 
 // The run's arguments a request may give, by the command line's names (without the dashes).
 constexpr std::string_view kRunKeys =
@@ -79,6 +81,7 @@ std::string Session::handle(std::string_view request) {
       Json reply = advance(parsed);
       return replyText(std::move(reply), newRecords());
     }
+    if (op == "inspect") return replyText(inspect(parsed), "");
     if (op == "stop") return replyText(stop(), "");
     throw UsageError(fmt::format("unknown op \"{}\": one of {}", op, kOperations));
   } catch (const UsageError& error) {
@@ -334,6 +337,29 @@ Json Session::advance(const Json& request) {
   reply["next"] = next ? Json(double(*next) / kSecond) : Json(nullptr);
   reply["events"] = run_->statistics().events();
   reply["motions"] = run_->statistics().motions;
+  return reply;
+}
+
+// What a module's program is doing now in the run, as the program tells it (the states a stalled
+// reconfiguration names), and how many are still at work.
+Json Session::inspect(const Json& request) const {
+  if (!running()) throw UsageError("no run in progress: start one with \"run\"");
+  const int64_t id = integer(request, "id");
+  const std::vector<algorithms::ModuleState> unfinished = run_->unfinished();
+  const auto found = std::find_if(
+      unfinished.begin(), unfinished.end(),
+      [&](const algorithms::ModuleState& module) { return int64_t(module.id.value) == id; });
+  const bool inScene =
+      id >= 0 && id <= int64_t(UINT32_MAX) && scene_.world.find(ModuleId{uint32_t(id)});
+  if (found == unfinished.end() && !inScene) {
+    throw UsageError(fmt::format("no module {} in the run", id));
+  }
+  Json reply;
+  reply["id"] = id;
+  // A module the program does not list is done with its part (settled, for reconfigure), or
+  // the program tells nothing of its modules.
+  reply["state"] = found != unfinished.end() ? Json(found->state) : Json(nullptr);
+  reply["unfinished"] = unfinished.size();
   return reply;
 }
 

@@ -63,6 +63,7 @@ class Session {
   Json moves(const Json& request) const;
   Json startRun(const Json& request);
   Json advance(const Json& request);
+  Json inspect(const Json& request) const;
   Json stop();
   // The trace records the pages have not had yet, as one JSON array's text.
   std::string newRecords();

@@ -54,6 +54,14 @@ try {
   const state = () => page.evaluate(() => window.datomsimStudio.state());
   const waitFor = (predicate, argument = null) =>
     page.waitForFunction(predicate, argument, { timeout: 30000, polling: 100 });
+  // Step clicked `count` times, each waited for until its events have run.
+  const stepTimes = async (count) => {
+    for (let k = 0; k < count; ++k) {
+      const before = (await state()).events;
+      await page.click('#ds-step');
+      await waitFor((n) => window.datomsimStudio.state().events > n, before);
+    }
+  };
 
   await check('the page opens with the scene', async () => {
     await page.goto(url);
@@ -213,11 +221,7 @@ try {
     await page.fill('#ds-start', '0,0,2');
     await page.click('#ds-run');
     await waitFor(() => window.datomsimStudio.state().running);
-    for (let k = 0; k < 3; ++k) {
-      const before = (await state()).events;
-      await page.click('#ds-step');
-      await waitFor((n) => window.datomsimStudio.state().events > n, before);
-    }
+    await stepTimes(3);
     const stepped = await state();
     assert(stepped.time > 0 && !stepped.over, JSON.stringify(stepped));
     await page.selectOption('#ds-speed', '0');
@@ -230,6 +234,28 @@ try {
     assert(s.result.motions === expected.motions, `motions ${s.result.motions} against ${expected.motions}`);
     assert(s.result.events === expected.events, `events ${s.result.events} against ${expected.events}`);
     assert(JSON.stringify(s.result.path) === JSON.stringify(expected.path), 'the path differs');
+  });
+
+  await check('a mover clicked during a reconfiguration says what its program is doing', async () => {
+    await page.selectOption('#ds-generate-kind', 'reshape');
+    await page.fill('#ds-generate-options', 'case=line length=8');
+    await page.click('#ds-generate');
+    await waitFor(() => window.datomsimStudio.state().modules === 104);
+    await page.selectOption('#ds-program', 'reconfigure');
+    await page.fill('#ds-goal', '');
+    await page.fill('#ds-start', '');
+    await page.click('#ds-run');
+    await waitFor(() => window.datomsimStudio.state().running);
+    await stepTimes(3);
+    // Module 104 ends the line, off the target: a mover.
+    const at = await page.evaluate(() => window.datomsimViewer.screenPositionOf(104));
+    await page.mouse.click(at.x, at.y);
+    await waitFor(() => /module 104: /.test(document.querySelector('#ds-status').textContent));
+    const line = await page.textContent('#ds-status');
+    assert(!line.includes('done with its part'), line);
+    await page.screenshot({ path: join(shots, 'studio-inspect.png') });
+    await page.click('#ds-stop');
+    await waitFor(() => !window.datomsimStudio.state().running);
   });
 
   await check('the page raised no error', async () => {

@@ -100,7 +100,7 @@ export function startStudio(root) {
   new ResizeObserver(fitBelowBar).observe(bar);
 
   // What the page knows, for the person and for tests (window.datomsimStudio.state()).
-  const state = { moves: null, modules: 0, running: false, over: false, time: 0, events: 0, motions: 0, error: null, result: null };
+  const state = { inspected: null, moves: null, modules: 0, running: false, over: false, time: 0, events: 0, motions: 0, error: null, result: null };
   let traceText = '';
   let app = null;
   let playing = false;
@@ -143,6 +143,11 @@ export function startStudio(root) {
     const module = app.frame.modules[index];
     if (!event.shiftKey) {
       cellField.value = module.cell.join(',');
+      // During a run, what its program is doing, kept up to date as the run goes.
+      if (state.running) {
+        state.inspected = { id: module.id, state: null };
+        await inspect();
+      }
       return;
     }
     if (state.running) return;
@@ -163,7 +168,10 @@ export function startStudio(root) {
       const end = result
         ? `, ended${result.failure ? `: ${result.failure}` : ''}${result.arrived === false ? ' (the mobile did not arrive)' : ''}`
         : '';
-      status.textContent = `t = ${state.time.toFixed(2)} s, ${state.events} events, ${state.motions} motions${end}`;
+      const inspected = state.inspected
+        ? `; module ${state.inspected.id}: ${state.inspected.state ?? 'its program is done with its part, or tells nothing'}`
+        : '';
+      status.textContent = `t = ${state.time.toFixed(2)} s, ${state.events} events, ${state.motions} motions${end}${inspected}`;
     } else {
       status.textContent = `${state.modules} modules; choose a program and Run, or edit the scene`;
     }
@@ -214,6 +222,15 @@ export function startStudio(root) {
     say();
   }
 
+  // The inspected module's state now (the program's own words: `inspect`).
+  async function inspect() {
+    if (!state.inspected || !state.running) return;
+    const reply = await ask({ op: 'inspect', id: state.inspected.id });
+    if (!took(reply)) return;
+    state.inspected.state = reply.state;
+    say();
+  }
+
   async function advance(request) {
     const reply = await ask({ op: 'advance', ...request });
     if (!took(reply)) return false;
@@ -221,6 +238,7 @@ export function startStudio(root) {
     Object.assign(state, { time: reply.time, over: reply.over, events: reply.events, motions: reply.motions });
     show(state.time);
     say();
+    await inspect();
     // Over: nothing more can happen; its result is what the person wants next.
     if (reply.over) await stop();
     return !reply.over;
@@ -254,7 +272,7 @@ export function startStudio(root) {
     const reply = await ask({ op: 'stop' });
     if (!took(reply)) return;
     traceText += reply.trace_tail;
-    Object.assign(state, { running: false, over: true, result: reply.result });
+    Object.assign(state, { running: false, over: true, result: reply.result, inspected: null });
     show(state.time);
     say();
   }
@@ -267,7 +285,7 @@ export function startStudio(root) {
     if (!took(reply)) return;
     traceText = '';
     append(reply.records);
-    Object.assign(state, { running: true, over: false, time: 0, events: 0, motions: 0, result: null });
+    Object.assign(state, { running: true, over: false, time: 0, events: 0, motions: 0, result: null, inspected: null });
     show(0, true);
     say();
   });

@@ -316,6 +316,42 @@ TEST(StudioSession, ARunSteppedInTheStudioIsTheCommandLinesRun) {
 
 // An advance that would bring more trace records than a reply carries stops early, says so, and
 // the page asks again: the run is the same, byte for byte.
+// During a run, a module's program says what it is doing (the states a stalled reconfiguration
+// names); a module done with its part, or of a program that tells nothing, has no state.
+TEST(StudioSession, AModuleInspectedDuringARunSaysWhatItsProgramIsDoing) {
+  Session session(*io::readScene(std::string(DATOMSIM_SOURCE_DIR) + "/scenes/reshape-line.json"),
+                  "line");
+  refused(session, R"({"op": "inspect", "id": 1})", "no run in progress");
+  ASSERT_TRUE(ask(session, {{"op", "run"}, {"program", "reconfigure"}, {"seed", "1"}})
+                  .at("ok")
+                  .get<bool>());
+  ASSERT_TRUE(ask(session, {{"op", "advance"}, {"by", 3}}).at("ok").get<bool>());
+  size_t stated = 0;
+  size_t unfinished = 0;
+  for (const world::Module& module : session.scene().world.modules()) {
+    const json reply = ask(session, {{"op", "inspect"}, {"id", module.id.value}});
+    ASSERT_TRUE(reply.at("ok").get<bool>()) << reply;
+    unfinished = reply.at("unfinished").get<size_t>();
+    if (reply.at("state").is_string()) {
+      ++stated;
+      EXPECT_FALSE(reply.at("state").get<std::string>().empty());
+    }
+  }
+  // Every mover still at work has its state, and only those.
+  EXPECT_GT(stated, 0u);
+  EXPECT_EQ(stated, unfinished);
+  EXPECT_LT(stated, session.scene().world.size());
+  refused(session, R"({"op": "inspect", "id": 99999})", "no module 99999 in the run");
+  refused(session, R"({"op": "inspect", "id": 4294967297})", "no module 4294967297 in the run");
+  refused(session, R"({"op": "inspect", "id": "1"})", "\"id\" must be an integer");
+  // Built: no module is at work any more.
+  ASSERT_TRUE(ask(session, {{"op", "advance"}, {"until", 3600}}).at("ok").get<bool>());
+  const json after = ask(session, {{"op", "inspect"}, {"id", 1}});
+  ASSERT_TRUE(after.at("ok").get<bool>()) << after;
+  EXPECT_EQ(after.at("unfinished").get<size_t>(), 0u);
+  EXPECT_TRUE(after.at("state").is_null());
+}
+
 TEST(StudioSession, AnAdvanceThatWouldBringTooManyRecordsStopsEarlyAndSaysSo) {
   Session session(arch(), "arch", /*mostRecordBytes=*/2000);
   const json started = startRun(session);

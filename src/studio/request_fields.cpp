@@ -75,6 +75,11 @@ Color colorOf(const Json& request, const char* key) {
   return Color{uint8_t(channels[0]), uint8_t(channels[1]), uint8_t(channels[2])};
 }
 
+std::string seedOf(const Json& request) {
+  const Json& value = request.at("seed");
+  return value.is_number_integer() ? std::to_string(value.get<int64_t>()) : text(request, "seed");
+}
+
 geometry::Cell cellOf(const Json& request, const char* key) {
   if (!request.contains(key)) throw UsageError(fmt::format("\"{}\": a cell is needed", key));
   const Json& value = request.at(key);

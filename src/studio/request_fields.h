@@ -22,6 +22,9 @@ bool flag(const nlohmann::json& request, const char* key);
 // A colour as three integers 0..255, [r, g, b], or as a page's colour input gives it, "#rrggbb".
 Color colorOf(const nlohmann::json& request, const char* key);
 
+// A seed as text, or as an integer (a page's number field): as the command line spells it.
+std::string seedOf(const nlohmann::json& request);
+
 // A cell as the command line types it ("x,y,z") or as three integers.
 geometry::Cell cellOf(const nlohmann::json& request, const char* key);
 

@@ -250,8 +250,7 @@ Json Session::startRun(const Json& request) {
     } else if (key == "start") {
       args.start = geometry::toString(cellOf(request, "start"));
     } else if (key == "seed") {
-      args.seed =
-          value.is_number_integer() ? std::to_string(value.get<int64_t>()) : text(request, "seed");
+      args.seed = seedOf(request);
     } else if (key == "param") {
       if (!value.is_object()) {
         throw UsageError("\"param\" must be an object of KEY: VALUE, got " + typeName(value));

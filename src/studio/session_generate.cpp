@@ -40,12 +40,6 @@ void onlyKnown(const Json& request, const std::string& kind,
   }
 }
 
-// A seed as text, or as an integer (a page's number field).
-std::string seedOf(const Json& request) {
-  const Json& value = request.at("seed");
-  return value.is_number_integer() ? std::to_string(value.get<int64_t>()) : text(request, "seed");
-}
-
 // An integer option that fits an int (the command line's): a larger one is refused, not cut.
 int smallInteger(const Json& request, const char* key) {
   const int64_t value = integer(request, key);

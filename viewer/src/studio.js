@@ -347,21 +347,16 @@ export function startStudio(root) {
 
   saveJson.addEventListener('click', save('json'));
   saveXml.addEventListener('click', save('xml'));
-  openInput.addEventListener('change', async () => {
-    const file = openInput.files[0];
+  // A file chosen: its name and text sent with `op` (open: the scene; target: its targets).
+  const sendFile = (input, op) => async () => {
+    const file = input.files[0];
     if (!file) return;
-    const reply = await ask({ op: 'open', name: file.name, text: await file.text() });
-    openInput.value = '';
+    const reply = await ask({ op, name: file.name, text: await file.text() });
+    input.value = '';
     if (took(reply)) await loadScene();
-  });
-
-  targetInput.addEventListener('change', async () => {
-    const file = targetInput.files[0];
-    if (!file) return;
-    const reply = await ask({ op: 'target', name: file.name, text: await file.text() });
-    targetInput.value = '';
-    if (took(reply)) await loadScene();
-  });
+  };
+  openInput.addEventListener('change', sendFile(openInput, 'open'));
+  targetInput.addEventListener('change', sendFile(targetInput, 'target'));
 
   window.datomsimStudio = { state: () => ({ ...state }) };
   socket.addEventListener('open', loadScene);

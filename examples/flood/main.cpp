@@ -6,6 +6,7 @@
 #include <datomsim/datomsim.h>
 
 #include <memory>
+#include <string>
 
 struct HopsMsg {
   static constexpr std::string_view kName = "HopsMsg";
@@ -28,6 +29,11 @@ class Flood : public datomsim::Program {
 
   void report(datomsim::Report& report) const override {
     if (hops_ >= 0) report.set("hops", hops_);
+  }
+
+  // What a live front end shows of this module during a run.
+  std::string describe() const override {
+    return hops_ < 0 ? "not reached yet" : "hops from the source: " + std::to_string(hops_);
   }
 
   static datomsim::ProgramEntry entry() {

@@ -199,6 +199,12 @@ class DATOMSIM_API Program {
 
   // After the run: what this module reports (Report).
   virtual void report(Report& /*report*/) const {}
+
+  // What this module's program is doing now, in a few words ("waiting for 2 helpers to
+  // compress", "hops from the source: 4"), for a live front end: the studio shows it when the
+  // module is clicked during a run. Asked between events, never during one; empty when the
+  // program has nothing to say.
+  virtual std::string describe() const { return {}; }
 };
 
 // A program as the command line knows it: its name for `run --program NAME`, its parameters, and

@@ -45,4 +45,8 @@ void FloodProgram::report(Report& report) const {
   if (hops_ >= 0) report.set("hops", hops_);
 }
 
+std::string FloodProgram::describe() const {
+  return hops_ < 0 ? "not reached yet" : "hops from the source: " + std::to_string(hops_);
+}
+
 }  // namespace datomsim::algorithms

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 #include "datomsim/program.h"
@@ -32,6 +33,7 @@ class FloodProgram final : public Program {
 
   // -1 until the module has heard from the root.
   int32_t hops() const { return hops_; }
+  std::string describe() const override;
 
  private:
   void learn(Context& context, int32_t hops, int from);

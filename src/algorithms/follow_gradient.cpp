@@ -249,4 +249,15 @@ const ProgramKind& followGradientKind() {
   return kind;
 }
 
+std::string FollowGradientProgram::describe() const {
+  if (walk_) {
+    if (walk_->arrived) return "the mobile: arrived at the goal";
+    if (walk_->phase == Phase::kIdle) return "the mobile: not started";
+    return "the mobile: " + describeWait();
+  }
+  std::string state = GradientProgram::describe();
+  if (duty_ && duty_->makingWay()) state += "; a helper, making way for the mobile";
+  return state;
+}
+
 }  // namespace datomsim::algorithms

@@ -55,6 +55,9 @@ class FollowGradientProgram : public GradientProgram {
   bool arrived() const { return walk_ && walk_->arrived; }
   // What the mobile is doing or waiting for, for a run that ends before it arrives.
   std::string describeWait() const;
+  // The mobile: where it is and what it waits for; any other module: its distances, and whether
+  // it makes way for the mobile.
+  std::string describe() const override;
   // The cells of the helpers whose AckDeform the mobile still waits for.
   std::vector<geometry::Cell> awaitedHelpers() const;
 

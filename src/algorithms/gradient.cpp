@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include "algorithms/programs_by_slot.h"
 #include "geometry/lattice.h"
 
@@ -228,6 +230,20 @@ const ProgramKind& gradientKind() {
         return std::make_unique<GradientPrograms>(parameters, moduleCount);
       }};
   return kind;
+}
+
+std::string GradientProgram::describe() const {
+  int known = 0;
+  int32_t least = kUnknown;
+  for (int d = 0; d < geometry::kDirectionCount; ++d) {
+    const int32_t distance = distanceTowards(d);
+    if (distance == kUnknown) continue;
+    ++known;
+    least = std::min(least, distance);
+  }
+  if (known == 0) return "knows no distance to the goal yet";
+  return fmt::format("knows the goal's distance from {} of its 12 neighbour cells, the least {}",
+                     known, least);
 }
 
 }  // namespace datomsim::algorithms

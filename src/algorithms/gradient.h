@@ -78,6 +78,8 @@ class GradientProgram : public Program {
   }
   // Why this module's program gave up (a refused message, compression or motion), if it did.
   std::optional<std::string> failure() const { return rare_ ? rare_->failure : std::nullopt; }
+  // How many of its neighbour cells it knows the goal's distance of, and the least.
+  std::string describe() const override;
 
  protected:
   bool isMobile(const Context& context) const { return context.id() == parameters_->mobile; }

@@ -371,4 +371,14 @@ void LoadsProgram::report(Report& report) const {
   report.set("moment", moment);
 }
 
+std::string LoadsProgram::describe() const {
+  if (finished_) return "done: the loads on its latches are known";
+  if (!joined_) return "not reached by the tree yet";
+  if (iterations_ > 0) {
+    return fmt::format("the root: iteration {}, relative residual {:.3g}", iterations_,
+                       ff_ > 0 ? std::sqrt(rr_ / ff_) : 0.0);
+  }
+  return "in the conjugate gradient, its part of each product and sum";
+}
+
 }  // namespace datomsim::algorithms

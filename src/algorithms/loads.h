@@ -106,6 +106,8 @@ class LoadsProgram final : public Program {
   // "iterations", "residual" (|K u - f| / |f| as the iteration measured it), "converged" and
   // "modules" (how many the tree reached: the modules that took part).
   void report(Report& report) const override;
+  // Whether the tree has reached it, the iteration under way (the root counts them), or done.
+  std::string describe() const override;
 
  private:
   // One of the module's latched connections, as it knows it.

@@ -149,6 +149,12 @@ std::string ReconfigureProgram::describeState() const {
   return "?";
 }
 
+std::string ReconfigureProgram::describe() const {
+  std::string state = settled_ ? "settled on its target cell" : describeState();
+  if (makingWay()) state += "; a helper, making way for another's motion";
+  return state;
+}
+
 namespace {
 
 class ReconfigurePrograms final : public ProgramsBySlot<ReconfigureProgram> {

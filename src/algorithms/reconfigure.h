@@ -136,6 +136,8 @@ class ReconfigureProgram : public Program {
   int refusals() const { return refusals_; }
   // What a mover is doing or waiting for, for a run that ends before it settles.
   std::string describeState() const;
+  // The same, live, for any module: a settled one says so, and whether it makes way for a motion.
+  std::string describe() const override;
   const std::optional<std::string>& failure() const { return failure_; }
 
  private:

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "algorithms/programs_by_slot.h"
 #include "geometry/lattice.h"
 
@@ -153,6 +155,14 @@ const ProgramKind& walkersKind() {
         return std::make_unique<WalkerPrograms>(parameters, moduleCount);
       }};
   return kind;
+}
+
+std::string WalkerProgram::describe() const {
+  if (!walks_) return "stands: not a walker";
+  if (failure_) return "gave up: " + *failure_;
+  if (finished()) return fmt::format("walked its {} steps", kSteps);
+  return fmt::format("walking towards {}x: step {} of {}, {} refusals", heading_ > 0 ? "+" : "-",
+                     steps_, kSteps, refusals_);
 }
 
 }  // namespace datomsim::algorithms

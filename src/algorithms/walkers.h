@@ -42,6 +42,7 @@ class WalkerProgram : public Program {
   bool finished() const { return steps_ >= kSteps; }
   // Why the walker stopped before its last step, if it did.
   const std::optional<std::string>& failure() const { return failure_; }
+  std::string describe() const override;
 
  private:
   void step(Context& context);

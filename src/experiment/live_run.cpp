@@ -28,6 +28,14 @@ bool LiveRun::advance(Time until) {
   return phase_ == Phase::kOver;
 }
 
+std::optional<std::string> LiveRun::describe(ModuleId id) const {
+  // A module's program sits at the slot of its world index (Simulator::install).
+  const std::optional<uint32_t> index = simulator_->world().indexOf(id);
+  if (!index) return std::nullopt;
+  const Program* program = programs_->programAt(*index);
+  return program ? program->describe() : std::string();
+}
+
 void LiveRun::mainEnded() {
   if (status_.ok() && triggerTag_) {
     simulator_->trigger(*mobile_, *triggerTag_);

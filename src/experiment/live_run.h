@@ -45,6 +45,9 @@ class LiveRun {
   // The modules whose program is still at work now, by increasing id, and what each is doing (a
   // program that tells: ProgramSet::unfinished); a live front end shows it as the run goes.
   std::vector<algorithms::ModuleState> unfinished() const { return programs_->unfinished(); }
+  // What a module's program says it is doing now (Program::describe): empty when it says
+  // nothing, nothing when no module has that id.
+  std::optional<std::string> describe(ModuleId id) const;
   // The trace so far (RunRequest::trace): its header and every record of the events run.
   const std::string& traceSoFar() const { return trace_->text(); }
 

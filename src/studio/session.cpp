@@ -339,26 +339,18 @@ Json Session::advance(const Json& request) {
   return reply;
 }
 
-// What a module's program is doing now in the run, as the program tells it (the states a stalled
-// reconfiguration names), and how many are still at work.
+// What a module's program is doing now in the run, in its own words (Program::describe), and
+// how many modules a program that lists them (reconfigure's movers) has still at work.
 Json Session::inspect(const Json& request) const {
   if (!running()) throw UsageError("no run in progress: start one with \"run\"");
   const int64_t id = integer(request, "id");
-  const std::vector<algorithms::ModuleState> unfinished = run_->unfinished();
-  const auto found = std::find_if(
-      unfinished.begin(), unfinished.end(),
-      [&](const algorithms::ModuleState& module) { return int64_t(module.id.value) == id; });
-  const bool inScene =
-      id >= 0 && id <= int64_t(UINT32_MAX) && scene_.world.find(ModuleId{uint32_t(id)});
-  if (found == unfinished.end() && !inScene) {
-    throw UsageError(fmt::format("no module {} in the run", id));
-  }
+  const std::optional<std::string> state =
+      id >= 0 && id <= int64_t(UINT32_MAX) ? run_->describe(ModuleId{uint32_t(id)}) : std::nullopt;
+  if (!state) throw UsageError(fmt::format("no module {} in the run", id));
   Json reply;
   reply["id"] = id;
-  // A module the program does not list is done with its part (settled, for reconfigure), or
-  // the program tells nothing of its modules.
-  reply["state"] = found != unfinished.end() ? Json(found->state) : Json(nullptr);
-  reply["unfinished"] = unfinished.size();
+  reply["state"] = state->empty() ? Json(nullptr) : Json(*state);
+  reply["unfinished"] = run_->unfinished().size();
   return reply;
 }
 

@@ -169,7 +169,7 @@ export function startStudio(root) {
         ? `, ended${result.failure ? `: ${result.failure}` : ''}${result.arrived === false ? ' (the mobile did not arrive)' : ''}`
         : '';
       const inspected = state.inspected
-        ? `; module ${state.inspected.id}: ${state.inspected.state ?? 'its program is done with its part, or tells nothing'}`
+        ? `; module ${state.inspected.id}: ${state.inspected.state ?? 'its program tells nothing'}`
         : '';
       status.textContent = `t = ${state.time.toFixed(2)} s, ${state.events} events, ${state.motions} motions${end}${inspected}`;
     } else {

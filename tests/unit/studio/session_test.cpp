@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -326,21 +327,20 @@ TEST(StudioSession, AModuleInspectedDuringARunSaysWhatItsProgramIsDoing) {
                   .at("ok")
                   .get<bool>());
   ASSERT_TRUE(ask(session, {{"op", "advance"}, {"by", 3}}).at("ok").get<bool>());
-  size_t stated = 0;
+  size_t atWork = 0;
   size_t unfinished = 0;
   for (const world::Module& module : session.scene().world.modules()) {
     const json reply = ask(session, {{"op", "inspect"}, {"id", module.id.value}});
     ASSERT_TRUE(reply.at("ok").get<bool>()) << reply;
     unfinished = reply.at("unfinished").get<size_t>();
-    if (reply.at("state").is_string()) {
-      ++stated;
-      EXPECT_FALSE(reply.at("state").get<std::string>().empty());
-    }
+    // Every module says something; the settled ones say so.
+    ASSERT_TRUE(reply.at("state").is_string()) << reply;
+    if (!reply.at("state").get<std::string>().starts_with("settled")) ++atWork;
   }
-  // Every mover still at work has its state, and only those.
-  EXPECT_GT(stated, 0u);
-  EXPECT_EQ(stated, unfinished);
-  EXPECT_LT(stated, session.scene().world.size());
+  // The movers still at work are those the program lists as unfinished.
+  EXPECT_GT(atWork, 0u);
+  EXPECT_EQ(atWork, unfinished);
+  EXPECT_LT(atWork, session.scene().world.size());
   refused(session, R"({"op": "inspect", "id": 99999})", "no module 99999 in the run");
   refused(session, R"({"op": "inspect", "id": 4294967297})", "no module 4294967297 in the run");
   refused(session, R"({"op": "inspect", "id": "1"})", "\"id\" must be an integer");
@@ -349,7 +349,57 @@ TEST(StudioSession, AModuleInspectedDuringARunSaysWhatItsProgramIsDoing) {
   const json after = ask(session, {{"op", "inspect"}, {"id", 1}});
   ASSERT_TRUE(after.at("ok").get<bool>()) << after;
   EXPECT_EQ(after.at("unfinished").get<size_t>(), 0u);
-  EXPECT_TRUE(after.at("state").is_null());
+  EXPECT_EQ(after.at("state"), "settled on its target cell");
+}
+
+// A program of the public API (flood, as a researcher's would be) tells through the same hook.
+TEST(StudioSession, AFloodingModuleSaysItsHops) {
+  Session session(arch(), "arch");
+  const geometry::Cell root = session.scene().world.modules().front().cell;
+  ASSERT_TRUE(
+      ask(session,
+          {{"op", "run"}, {"program", "flood"}, {"param", {{"root", geometry::toString(root)}}}})
+          .at("ok")
+          .get<bool>());
+  ASSERT_TRUE(ask(session, {{"op", "advance"}, {"until", 1e6}}).at("ok").get<bool>());
+  for (const world::Module& module : session.scene().world.modules()) {
+    const json reply = ask(session, {{"op", "inspect"}, {"id", module.id.value}});
+    ASSERT_TRUE(reply.at("ok").get<bool>()) << reply;
+    const std::string state = reply.at("state").get<std::string>();
+    EXPECT_TRUE(state.starts_with("hops from the source: ")) << state;
+    if (module.cell == root) {
+      EXPECT_EQ(state, "hops from the source: 0");
+    }
+  }
+}
+
+// Every built-in program tells its state through the same hook (Program::describe): here the
+// paper's follow-gradient, whose mobile walks while the others hold distances.
+TEST(StudioSession, EveryProgramSaysWhatItsModulesAreDoing) {
+  Session session(arch(), "arch");
+  ASSERT_TRUE(startRun(session).at("ok").get<bool>());
+  ASSERT_TRUE(ask(session, {{"op", "advance"}, {"by", 2}}).at("ok").get<bool>());
+  // The run's modules: the scene's, and the mobile if the run placed one at the start.
+  std::optional<int64_t> mobile;
+  size_t knowing = 0, modules = 0;
+  for (uint32_t id = 0; id < 1000; ++id) {
+    const json reply = ask(session, {{"op", "inspect"}, {"id", id}});
+    if (!reply.at("ok").get<bool>()) continue;
+    ++modules;
+    const std::string state = reply.at("state").get<std::string>();
+    if (state.starts_with("the mobile: ")) {
+      EXPECT_FALSE(mobile) << "two mobiles: " << *mobile << " and " << id;
+      mobile = id;
+    } else if (state.starts_with("knows the goal's distance from")) {
+      ++knowing;
+    }
+  }
+  ASSERT_TRUE(mobile);
+  // The gradient has spread over the arch by then.
+  EXPECT_GT(knowing, modules / 2);
+  ASSERT_TRUE(ask(session, {{"op", "advance"}, {"until", 1e6}}).at("ok").get<bool>());
+  EXPECT_EQ(ask(session, {{"op", "inspect"}, {"id", *mobile}}).at("state"),
+            "the mobile: arrived at the goal");
 }
 
 TEST(StudioSession, AnAdvanceThatWouldBringTooManyRecordsStopsEarlyAndSaysSo) {

@@ -2,11 +2,13 @@
 """The reconfiguration benchmark suite (docs/reconfiguration.md, "Benchmark suite").
 
     bench/reconfiguration/run_suite.py [--out DIR] [--large] [--family F ...] [--workers N]
+                                       [--param KEY=VALUE ...]
 
 Each case of suite.json is generated with `datomsim generate reshape`, then run three ways: the
 distributed program (`run --program reconfigure`), the same one motion at a time
 (`--max-motions 1`, for the speed-up), and the centralised planner (`datomsim plan`, for the
-motion count to compare with and a lower bound). DIR (default reconfiguration-results) receives:
+motion count to compare with and a lower bound). `--param` is given to both runs of the
+distributed program (`--param claims=1`: docs/reconfiguration.md, "Claims"). DIR (default reconfiguration-results) receives:
 
     results.csv    one row per case
     summary.md     the table, each family's figures and the quality goals, met or not
@@ -68,7 +70,7 @@ def cases(suite, families, large):
                 yield family["family"], name.replace(",", "x"), case["args"], seed
 
 
-def run_case(datomsim, out, planner, family, name, args, seed):
+def run_case(datomsim, out, planner, params, family, name, args, seed):
     scene = os.path.join(out, "cases", name + ".json")
     runs = os.path.join(out, "runs", name)
     row = {"family": family, "case": name, "seed": seed}
@@ -83,8 +85,9 @@ def run_case(datomsim, out, planner, family, name, args, seed):
 
     parallel = runs + "-distributed.json"
     sequential = runs + "-sequential.json"
-    wall = run_timed(datomsim, scene, parallel, seed, [])
-    run_timed(datomsim, scene, sequential, seed, ["--max-motions", "1"])
+    given = [word for pair in params for word in ("--param", pair)]
+    wall = run_timed(datomsim, scene, parallel, seed, given)
+    run_timed(datomsim, scene, sequential, seed, [*given, "--max-motions", "1"])
     result, alone = read_json(parallel), read_json(sequential)
     # The target: the cells filled at the end but the extra ones, and those left empty.
     cells = [c for c in result["final"] if c not in result["extra"]] + result["missing"]
@@ -153,9 +156,11 @@ def median(values):
     return values[middle] if len(values) % 2 else (values[middle - 1] + values[middle]) / 2
 
 
-def summary(suite, rows, planner, version):
+def summary(suite, rows, planner, version, params):
+    given = ", ".join(f"`--param {p}`" for p in params) or "the program's defaults"
     lines = [f"# {suite['name']}, version {suite['version']}", "",
-             f"datomsim {version}; {platform.machine()}, {os.cpu_count()} cores. "
+             f"datomsim {version}; {platform.machine()}, {os.cpu_count()} cores; "
+             f"reconfigure with {given}. "
              f"{len(rows)} cases, {sum(r['success'] for r in rows)} built.", ""]
     if not planner:
         lines += ["The centralised planner (`datomsim plan`) is not in this build: the planner "
@@ -251,9 +256,14 @@ def main():
     parser.add_argument("--family", action="append", help="only this family (repeatable)")
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--no-plot", action="store_true")
+    parser.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
+                        help="a parameter of the distributed program (repeatable)")
     options = parser.parse_args()
     if not os.access(options.datomsim, os.X_OK):
         raise SystemExit(f"suite: no datomsim at {options.datomsim} (build it, or --datomsim)")
+    for pair in options.param:
+        if "=" not in pair or pair.startswith("="):
+            raise SystemExit(f"suite: --param {pair}: expected KEY=VALUE")
     if options.workers < 1:
         raise SystemExit(f"suite: --workers {options.workers}: 1 or more")
     suite = read_json(options.suite)
@@ -268,7 +278,8 @@ def main():
                              text=True).stdout.strip()
     todo = list(cases(suite, options.family, options.large))
     with concurrent.futures.ThreadPoolExecutor(options.workers) as pool:
-        futures = [pool.submit(run_case, options.datomsim, options.out, planner, *case)
+        futures = [pool.submit(run_case, options.datomsim, options.out, planner, options.param,
+                               *case)
                    for case in todo]
         rows = []
         for future, case in zip(futures, todo):
@@ -283,7 +294,7 @@ def main():
         writer.writerows(rows)
     os.replace(results + ".partial", results)
     with open(os.path.join(options.out, "summary.md"), "w") as f:
-        f.write(summary(suite, rows, planner, version))
+        f.write(summary(suite, rows, planner, version, options.param))
     if not options.no_plot:
         plot(rows, os.path.join(options.out, "makespan.png"))
     print(f"wrote {results}, summary.md{'' if options.no_plot else ', makespan.png'} in "

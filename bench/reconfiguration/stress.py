@@ -4,6 +4,7 @@
     bench/reconfiguration/stress.py --cases N [--seed S] [--movers LO,HI] [--heights LO,HI]
                                     [--families F,...] [--spread uniform|log]
                                     [--range FROM,TO] [--workers W] [--out DIR]
+                                    [--param KEY=VALUE ...]
 
 Case i draws, from a stream seeded by S, a family (in turn) and its case:
 
@@ -15,7 +16,7 @@ Case i draws, from a stream seeded by S, a family (in turn) and its case:
 
 `--spread log` draws the movers and the sizes log-uniformly (as many small cases as large ones),
 `uniform` (the default) uniformly. Each case is generated and run with `run --program
-reconfigure --seed R` (R drawn too); it is one CSV row in DIR/stress.csv (family, generate
+reconfigure --seed R` (R drawn too, and the `--param`s given, such as `claims=1`); it is one CSV row in DIR/stress.csv (family, generate
 arguments, run seed, movers, built or not, motions, makespan, wall time, the reason), written as
 the cases end (DIR/stress.csv.partial meanwhile); the cases not built are printed with the
 command that makes them again, and their scene and run JSON stay in DIR/failed/. The same
@@ -80,7 +81,7 @@ def draw(stream, family, movers, heights, spread):
     return ["cube", "--side", str(max(16, 9 * edge + stream.randint(0, 8))), "--base", str(edge)]
 
 
-def run_case(datomsim, folder, kept, index, family, arguments, seed):
+def run_case(datomsim, folder, kept, params, index, family, arguments, seed):
     scene = os.path.join(folder, f"case{index}.json")
     out = os.path.join(folder, f"run{index}.json")
     made = subprocess.run([datomsim, "generate", "reshape", *arguments, "-o", scene],
@@ -90,8 +91,9 @@ def run_case(datomsim, folder, kept, index, family, arguments, seed):
     info = json.loads(subprocess.run([datomsim, "info", scene, "--json"], capture_output=True,
                                      text=True, check=True).stdout)
     start = time.monotonic()
+    given = [word for pair in params for word in ("--param", pair)]
     subprocess.run([datomsim, "run", scene, "--program", "reconfigure", "--seed", str(seed),
-                    "--out", out],
+                    "--out", out, *given],
                    capture_output=True)
     wall = time.monotonic() - start
     result = json.load(open(out))
@@ -120,9 +122,14 @@ def main():
     parser.add_argument("--range", type=index_range, dest="case_range")
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--out", default="stress-results")
+    parser.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
+                        help="a parameter of the program (repeatable)")
     options = parser.parse_args()
     if options.cases < 1 or options.workers < 1:
         raise SystemExit("stress: --cases and --workers are 1 or more")
+    for given in options.param:
+        if "=" not in given or given.startswith("="):
+            raise SystemExit(f"stress: --param {given}: expected KEY=VALUE")
     unknown = set(options.families) - set(FAMILIES)
     if unknown:
         raise SystemExit(f"stress: unknown families {sorted(unknown)}: choose among {FAMILIES}")
@@ -149,7 +156,7 @@ def main():
         writer.writeheader()
 
         def one(job):
-            row = run_case(options.datomsim, scratch, kept, *job)
+            row = run_case(options.datomsim, scratch, kept, options.param, *job)
             with lock:
                 rows.append(row)
                 writer.writerow(row)
@@ -163,9 +170,11 @@ def main():
         writer.writerows(rows)
     os.replace(path + ".partial", path)
     lost = [r for r in rows if not r["success"]]
+    params = "".join(f" --param {given}" for given in options.param)
     for r in lost:
         print(f"not built: datomsim generate reshape {r['generate']} -o c.json && "
-              f"datomsim run c.json --program reconfigure --seed {r['run_seed']}  # {r['reason'][:160]}")
+              f"datomsim run c.json --program reconfigure --seed {r['run_seed']}{params}  "
+              f"# {r['reason'][:160]}")
     print(f"{len(rows) - len(lost)} of {len(rows)} built; wrote {path}")
     sys.exit(1 if lost else 0)
 

@@ -48,6 +48,9 @@ struct ProgramParameters {
   // declaration; programs that declare none refuse any.
   std::map<std::string, std::string> given;
   ActuationWaits waits;
+  // For a built-in program: `given` checked against its declaration (ProgramKind::parameters),
+  // every declared one present; filled by makePrograms.
+  Parameters checked = {};
 };
 
 // The modules of a run at its end, by slot (Context::slot), as a program set sees them when it
@@ -126,8 +129,11 @@ struct ProgramKind {
   // and runs on until it is quiet again.
   std::optional<int> mobileTrigger = std::nullopt;
 
-  // Makes the programs of a run of `moduleCount` modules; for a built-in program, which takes no
-  // --param.
+  // A built-in program's parameters (--param), checked before the run as a program of the
+  // public API's are; a program of the public API declares its own in its entry.
+  std::vector<Parameter> parameters = {};
+
+  // Makes the programs of a run of `moduleCount` modules; for a built-in program.
   std::unique_ptr<ProgramSet> (*make)(const ProgramParameters&, size_t moduleCount) = nullptr;
   // A program of the public API (datomsim/program.h): a built-in one such as flood, or one a
   // researcher's executable adds; its parameters are declared there.

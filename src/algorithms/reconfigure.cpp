@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <map>
+#include <string>
 
 #include "algorithms/programs_by_slot.h"
 #include "geometry/lattice.h"
@@ -30,22 +32,24 @@ void ReconfigureProgram::onStart(Context& context) {
 
 void ReconfigureProgram::onMessage(Context& context, int ownConnector, const Message& message) {
   if (const auto* version = message.as<GradientVersion>()) return adopt(context, version->version);
-  auto learnFrom = [&](const Cell& cell, int32_t distance, uint64_t version) {
+  if (const auto* claim = message.as<ClaimMsg>()) return onClaim(context, ownConnector, *claim);
+  auto learnFrom = [&](const Cell& cell, int32_t distance, uint64_t version, GoalOffset goal) {
     if (version < version_) return;
     adopt(context, version);
     if (const auto d = geometry::directionOfOffset(cell - context.cell())) {
-      learn(context, *d, distance);
+      learn(context, *d, distance, goal);
     }
   };
   if (const auto* update = message.as<ShapeDistance>()) {
-    return learnFrom(update->cell, update->distance, update->version);
+    return learnFrom(update->cell, update->distance, update->version, update->goal);
   }
   if (const auto* query = message.as<GoalQuery>()) {
     const auto d = geometry::directionOfOffset(query->cell - context.cell());
     // The mover may have moved on meanwhile: the reply is then lost, and its watchdog copes.
     const Status replied = context.send(
-        ownConnector, Message::of(GoalReply{query->cell, query->candidate,
-                                            d ? distances_[*d] : kUnknown, version_, settled_}));
+        ownConnector,
+        Message::of(GoalReply{query->cell, query->candidate, d ? distances_[*d] : kUnknown,
+                              version_, settled_, d ? goals_[*d] : GoalOffset{}}));
     if (!replied.ok()) ++lostReplies_;
     return;
   }
@@ -57,6 +61,7 @@ void ReconfigureProgram::onMessage(Context& context, int ownConnector, const Mes
     candidateDistances_[reply->candidate] = reply->distance;
     candidateVersions_[reply->candidate] = reply->version;
     candidateSettled_[reply->candidate] = reply->pivotSettled;
+    candidateGoals_[reply->candidate] = reply->goal;
     if (--waitingReplies_ == 0) choose(context);
     return;
   }
@@ -72,10 +77,11 @@ void ReconfigureProgram::onMessage(Context& context, int ownConnector, const Mes
   };
   if (routed(message.as<ShapeDistanceNotice>(),
              [&](const ShapeDistanceNotice& notice) {
-               learnFrom(notice.cell, notice.distance, notice.version);
+               learnFrom(notice.cell, notice.distance, notice.version, notice.goal);
              }) ||
       routed(message.as<FillQuery>(), [&](const FillQuery& q) { answerFill(context, q); }) ||
-      routed(message.as<FillReply>(), [&](const FillReply& r) { hearFill(context, r); })) {
+      routed(message.as<FillReply>(), [&](const FillReply& r) { hearFill(context, r); }) ||
+      routed(message.as<ClaimReply>(), [&](const ClaimReply& r) { hearClaim(context, r); })) {
     return;
   }
   // The helpers' protocol (helpers.h): this module as a helper, then as the mover.
@@ -135,6 +141,8 @@ std::string ReconfigureProgram::describeState() const {
       return fmt::format("waiting to try again ({} motions, {} refusals)", motions_, refusals_);
     case Phase::kAsking:
       return fmt::format("waiting for {} distances", waitingReplies_);
+    case Phase::kClaiming:
+      return "claiming the open cell it heads for";
     case Phase::kConfirming:
       return fmt::format("asking {} neighbours whether they stay", waitingReplies_);
     case Phase::kDeforming:
@@ -161,13 +169,21 @@ class ReconfigurePrograms final : public ProgramsBySlot<ReconfigureProgram> {
  public:
   ReconfigurePrograms(const ProgramParameters& parameters, size_t moduleCount)
       : target_(parameters.target),
+        given_(parameters.given),
         helperTerms_(ReconfigureProgram::helperTerms(parameters.waits.motion)) {
-    fill(moduleCount, target_, helperTerms_, parameters.waits.piston);
+    fill(moduleCount, target_, helperTerms_, parameters.waits.piston,
+         int(parameters.checked.integer("claims")));
   }
 
   std::optional<std::string> failure() const override { return firstFailure(); }
-  // The run's driver reports the shape built (experiment/reshape.h); the modules add nothing.
-  void report(const RunEnd&, RunReport&) const override {}
+  // The run's driver reports the shape built (experiment/reshape.h); the program adds the
+  // parameters given, if any (a run with the defaults writes what it always wrote).
+  void report(const RunEnd&, RunReport& out) const override {
+    if (given_.empty()) return;
+    RunReport::Record given;
+    for (const auto& [name, value] : given_) given.push_back({name, value});
+    out.add("parameters", std::move(given));
+  }
 
   std::vector<ModuleState> unfinished() const override {
     std::vector<ModuleState> out;
@@ -181,6 +197,7 @@ class ReconfigurePrograms final : public ProgramsBySlot<ReconfigureProgram> {
 
  private:
   std::shared_ptr<const TargetShape> target_;
+  std::map<std::string, std::string> given_;
   HelperDuty::Terms helperTerms_;  // the programs' helpers hold them
 };
 
@@ -193,6 +210,12 @@ const ProgramKind& reconfigureKind() {
           "the ensemble reshapes itself into the scene's target, many modules moving at once",
       .needsTarget = true,
       .ending = ProgramKind::Ending::kTargetBuilt,
+      .parameters = {Parameter::integer(
+                         "claims",
+                         "claims on open cells: a mover waits while this many nearer movers head "
+                         "for its cell (fewer motions, a longer run; 0: no claims)",
+                         "0")
+                         .range(0, 12)},
       .make = [](const ProgramParameters& parameters,
                  size_t moduleCount) -> std::unique_ptr<ProgramSet> {
         return std::make_unique<ReconfigurePrograms>(parameters, moduleCount);

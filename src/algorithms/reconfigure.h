@@ -35,6 +35,10 @@
 //     lets go, or its lease lapses.
 //   - A pocket (an open cell walled in on its layer, which no mover can enter) is filled by a
 //     settled module next to it, which leaves a hole that movers reach.
+//   - With claims (--param claims=K, off by default), a mover claims the open cell it heads for
+//     before each motion from a module beside the cell, which holds the cell's claims; a mover
+//     with K nearer claimants ahead, and not twice as far as they are, waits where it is instead
+//     of racing them to a cell one of them fills (reconfigure_claims.cpp).
 #pragma once
 
 #include <climits>
@@ -58,19 +62,37 @@ struct GradientVersion {
   uint64_t version;
 };
 
+// Which open cell a distance leads to, as an offset from the cell whose distance it is: a byte a
+// coordinate keeps the messages within their capacity. A goal farther than a byte reaches is
+// unknown, and a mover heading for it makes no claim (ClaimMsg) until it is nearer.
+struct GoalOffset {
+  static constexpr int8_t kNone = INT8_MIN;
+  int8_t x = kNone, y = kNone, z = kNone;
+
+  bool known() const { return x != kNone; }
+  // The offset of `goal` from `from`, or unknown when a byte does not hold it.
+  static GoalOffset between(const geometry::Cell& from, const geometry::Cell& goal);
+  geometry::Cell goalFrom(const geometry::Cell& from) const {
+    return from + geometry::Cell{x, y, z};
+  }
+};
+
 // A distance of the given version, to a latched neighbour around the cell, or routed to one that
-// is not latched.
+// is not latched, with the open cell it leads to. The notice carries its version in 32 bits, to
+// stay within a message's capacity: a version a period of 10 s, that is 1,300 years.
 struct ShapeDistance {
   static constexpr std::string_view kName = "ShapeDistance";
   geometry::Cell cell;
   int32_t distance;
   uint64_t version;
+  GoalOffset goal;
 };
 struct ShapeDistanceNotice : RoutedMsg {
   static constexpr std::string_view kName = "ShapeDistanceNotice";
   geometry::Cell cell;
   int32_t distance;
-  uint64_t version;
+  uint32_t version;
+  GoalOffset goal;
 };
 
 // A mover asks a pivot for the distance of a goal, and hears it with its version.
@@ -86,6 +108,23 @@ struct GoalReply {
   int32_t distance;
   uint64_t version;
   bool pivotSettled;  // a pivot that will still be there
+  GoalOffset goal;    // the open cell the distance leads to, from `cell`
+};
+
+// With claims on, a mover claims the open cell it heads for before each motion: the claim goes to
+// the cell's registry, a module beside it (ReconfigureProgram::registryOf), which grants it to the
+// nearest movers and refuses the others, who wait instead of all walking to one cell (docs/
+// reconfiguration.md, "Claims"). A claim lapses after `leaseMs` unless its mover claims again.
+struct ClaimMsg : RoutedMsg {
+  static constexpr std::string_view kName = "ClaimMsg";
+  geometry::Cell goal;
+  int32_t distance;  // the mover's, in motions
+  uint32_t mover;    // its id
+  int32_t leaseMs;
+};
+struct ClaimReply : RoutedMsg {
+  static constexpr std::string_view kName = "ClaimReply";
+  bool granted = false;
 };
 
 // A mover about to fill a cell asks the modules in the cells that must be filled first whether
@@ -108,11 +147,13 @@ class ReconfigureProgram : public Program {
   static constexpr int32_t kUnknown = INT32_MAX;
 
   // `helperTerms` must outlive the program (its set's, helperTerms); `pistonWait` is how much
-  // longer than the fixed times a helper's piston may take to answer (ActuationWaits::piston).
+  // longer than the fixed times a helper's piston may take to answer (ActuationWaits::piston);
+  // `claimants`: how many movers nearer than it an open cell is granted to (0: no claims).
   ReconfigureProgram(std::shared_ptr<const TargetShape> target,
-                     const HelperDuty::Terms& helperTerms, Time pistonWait)
+                     const HelperDuty::Terms& helperTerms, Time pistonWait, int claimants)
       : target_(std::move(target)),
         pistonWait_(pistonWait),
+        claimants_(claimants),
         lease_(helperTerms.lease),
         helping_(helperTerms) {}
 
@@ -145,6 +186,7 @@ class ReconfigureProgram : public Program {
     kIdle,
     kWaiting,
     kAsking,
+    kClaiming,
     kConfirming,
     kDeforming,
     kMoving,
@@ -190,8 +232,8 @@ class ReconfigureProgram : public Program {
   void seedOpenCells(Context& context);
   // After a motion out of `left`: seeds it if it is an open target cell now.
   void seedLeftCell(Context& context, const geometry::Cell& left);
-  void learn(Context& context, int direction, int32_t distance);
-  void spread(Context& context, const geometry::Cell& cell, int32_t distance);
+  void learn(Context& context, int direction, int32_t distance, GoalOffset goal);
+  void spread(Context& context, const geometry::Cell& cell, int32_t distance, GoalOffset goal);
   void spreadFound(Context& context);
   // Whether a target cell may be filled now: empty (or held by this module, for its own cell),
   // some module under it, every target cell under it filled, and every target cell of its layer
@@ -210,6 +252,13 @@ class ReconfigureProgram : public Program {
   bool mayFillOwnCell(Context& context) const;
   void answerFill(Context& context, const FillQuery& query);
   void hearFill(Context& context, const FillReply& reply);
+  // Claims (reconfigure_claims.cpp). The registry of an open cell: the module beside it that
+  // keeps its claims, the same whichever neighbour a claim reaches first (below it, on the target,
+  // when there is one), or nothing when this module senses no neighbour of the cell.
+  std::optional<geometry::Cell> registryOf(Context& context, const geometry::Cell& goal) const;
+  void onClaim(Context& context, int ownConnector, const ClaimMsg& claim);
+  void keepClaim(Context& context, const ClaimMsg& claim);
+  void hearClaim(Context& context, const ClaimReply& reply);
   // A settled module next to a pocket that it can fill leaves its cell for it.
   void repairPocket(Context& context);
   void stepIntoPocket(Context& context);
@@ -220,6 +269,10 @@ class ReconfigureProgram : public Program {
   void onWatchdog(Context& context, uint32_t round);
   void step(Context& context);
   void choose(Context& context);
+  // The motion chosen (candidate `best`): claimed first when claims are on and its goal is known,
+  // then made (go).
+  void claimOrGo(Context& context, int best, bool sideways);
+  void go(Context& context, int best, bool sideways);
   void retryLater(Context& context);
   // An attempt failed (a helper refused or was silent, the engine refused): counted, and its goal
   // remembered until the next motion succeeds.
@@ -251,6 +304,7 @@ class ReconfigureProgram : public Program {
 
   std::shared_ptr<const TargetShape> target_;
   Time pistonWait_ = 0;
+  int claimants_ = 0;
   Time lease_ = kLeaseTime;  // the helpers' (helperTerms), renewed at half of it
   Router router_;
   uint32_t nextRequest_ = 1;
@@ -258,7 +312,8 @@ class ReconfigureProgram : public Program {
   // Gradient state.
   uint64_t version_ = 0;
   std::array<int32_t, 12> distances_{};
-  uint16_t unspread_ = 0;  // neighbour cells whose new distance is still to tell
+  std::array<GoalOffset, 12> goals_{};  // the open cell each distance leads to
+  uint16_t unspread_ = 0;               // neighbour cells whose new distance is still to tell
 
   // Mover state.
   bool settled_ = false;
@@ -267,6 +322,7 @@ class ReconfigureProgram : public Program {
   std::vector<int32_t> candidateDistances_;
   std::vector<uint64_t> candidateVersions_;
   std::vector<bool> candidateSettled_;
+  std::vector<GoalOffset> candidateGoals_;  // from each candidate's goal
   int waitingReplies_ = 0;
   std::optional<Motion> chosen_;
   int32_t chosenDistance_ = kUnknown;
@@ -278,6 +334,19 @@ class ReconfigureProgram : public Program {
   bool disagreed_ = false;
   // The cell this mover gave up filling for a mover it would wall in, until its next motion.
   std::optional<geometry::Cell> givenUp_;
+  // Claims: the chosen motion while its claim is asked, the claims refused in a row, and as a
+  // registry, the claims held on the open cells beside this module.
+  int claimedCandidate_ = -1;
+  bool claimedSideways_ = false;
+  uint32_t claimRequest_ = 0;
+  int denials_ = 0;
+  struct Claim {
+    geometry::Cell goal;
+    uint32_t mover;
+    int32_t distance;
+    Time until;
+  };
+  std::vector<Claim> claims_;
   int motions_ = 0;
   int refusals_ = 0;
   int idleRounds_ = 0;
@@ -304,6 +373,9 @@ class ReconfigureProgram : public Program {
   // Waits for the way in a row for one chosen motion; then the mover chooses again.
   int waitsForTheWay_ = 0;
   static constexpr int kMostWaitsForTheWay = 3;
+  // A mover refused a claim this many times in a row goes anyway: a claim saves motions, it must
+  // never stall a mover whose nearer rivals cannot move.
+  static constexpr int kMostDenials = 32;
   std::vector<std::pair<geometry::Cell, int>> failedGoals_;
   // The cells the mover has arrived at since it last went down the gradient, and how often.
   std::vector<std::pair<geometry::Cell, int>> visited_;

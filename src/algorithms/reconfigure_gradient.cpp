@@ -8,6 +8,13 @@ namespace datomsim::algorithms {
 
 using geometry::Cell;
 
+GoalOffset GoalOffset::between(const Cell& from, const Cell& goal) {
+  const Cell offset = goal - from;
+  auto fits = [](int32_t v) { return v > GoalOffset::kNone && v <= INT8_MAX; };
+  if (!fits(offset.x) || !fits(offset.y) || !fits(offset.z)) return {};
+  return {int8_t(offset.x), int8_t(offset.y), int8_t(offset.z)};
+}
+
 bool ReconfigureProgram::isOpen(Context& context, const Cell& cell) const {
   if (!target_->contains(cell)) return false;
   if (cell != context.cell() && context.occupied(cell).value_or(true)) return false;
@@ -37,6 +44,7 @@ void ReconfigureProgram::adopt(Context& context, uint64_t version) {
   if (version <= version_) return;
   version_ = version;
   distances_.fill(kUnknown);
+  goals_.fill(GoalOffset{});
   // The new version reaches every module through the latches.
   const uint16_t latched = context.latchedConnectors();
   for (int connector = 0; connector < geometry::kDirectionCount; ++connector) {
@@ -53,7 +61,7 @@ void ReconfigureProgram::seedOpenCells(Context& context) {
     const Cell cell = context.cell() + geometry::neighbourOffset(d);
     // An open cell one layer up looks kLayerBias motions farther: movers finish the lower layers
     // first, whose last cells are otherwise left to movers that must climb down to them.
-    if (isOpen(context, cell)) learn(context, d, kLayerBias * std::max(0, cell.z));
+    if (isOpen(context, cell)) learn(context, d, kLayerBias * std::max(0, cell.z), {0, 0, 0});
   }
 }
 
@@ -64,18 +72,26 @@ void ReconfigureProgram::seedLeftCell(Context& context, const Cell& left) {
   // lowers distances, so the wave of improvement is right in the version of now.
   const auto direction = geometry::directionOfOffset(left - context.cell());
   if (direction && isOpen(context, left)) {
-    learn(context, *direction, kLayerBias * std::max(0, left.z));
+    learn(context, *direction, kLayerBias * std::max(0, left.z), {0, 0, 0});
   }
 }
 
-void ReconfigureProgram::learn(Context& context, int direction, int32_t distance) {
-  // As in the paper's gradient (gradient.cpp): a worklist over this module's neighbour cells.
-  std::vector<std::pair<int, int32_t>> pending = {{direction, distance}};
+void ReconfigureProgram::learn(Context& context, int direction, int32_t distance,
+                               GoalOffset leadsTo) {
+  // As in the paper's gradient (gradient.cpp): a worklist over this module's neighbour cells,
+  // each distance with the open cell it leads to.
+  struct Pending {
+    int direction;
+    int32_t distance;
+    GoalOffset goal;
+  };
+  std::vector<Pending> pending = {{direction, distance, leadsTo}};
   while (!pending.empty()) {
-    const auto [d, value] = pending.back();
+    const auto [d, value, towards] = pending.back();
     pending.pop_back();
     if (value >= distances_[d]) continue;
     distances_[d] = value;
+    goals_[d] = towards;
     const Cell cell = context.cell() + geometry::neighbourOffset(d);
     // Told a moment later, with what has improved meanwhile: one message for several waves.
     if (!unspread_) context.setTimer(kSpreadDelay, kSpread);
@@ -84,7 +100,10 @@ void ReconfigureProgram::learn(Context& context, int direction, int32_t distance
     const int count = context.goalsAsPivot(cell, goals);
     for (int i = 0; i < count; ++i) {
       const auto goal = geometry::directionOfOffset(goals[i] - context.cell());
-      if (goal && value + 1 < distances_[*goal]) pending.push_back({*goal, value + 1});
+      if (!goal || value + 1 >= distances_[*goal]) continue;
+      pending.push_back(
+          {*goal, value + 1,
+           towards.known() ? GoalOffset::between(goals[i], towards.goalFrom(cell)) : GoalOffset{}});
     }
   }
 }
@@ -94,12 +113,13 @@ void ReconfigureProgram::spreadFound(Context& context) {
   unspread_ = 0;
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     if ((cells & (1u << d)) && distances_[d] != kUnknown) {
-      spread(context, context.cell() + geometry::neighbourOffset(d), distances_[d]);
+      spread(context, context.cell() + geometry::neighbourOffset(d), distances_[d], goals_[d]);
     }
   }
 }
 
-void ReconfigureProgram::spread(Context& context, const Cell& cell, int32_t distance) {
+void ReconfigureProgram::spread(Context& context, const Cell& cell, int32_t distance,
+                                GoalOffset goal) {
   const uint16_t latched = context.latchedConnectors();
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     const Cell around = cell + geometry::neighbourOffset(d);
@@ -109,7 +129,7 @@ void ReconfigureProgram::spread(Context& context, const Cell& cell, int32_t dist
       if ((latched & (1u << k)) && context.cellBehind(k) == around) connector = k;
     }
     if (connector >= 0) {
-      note(context.send(connector, Message::of(ShapeDistance{cell, distance, version_})));
+      note(context.send(connector, Message::of(ShapeDistance{cell, distance, version_, goal})));
     } else {
       ShapeDistanceNotice notice;
       notice.target = around;
@@ -117,7 +137,8 @@ void ReconfigureProgram::spread(Context& context, const Cell& cell, int32_t dist
       notice.request = nextRequest_++;
       notice.cell = cell;
       notice.distance = distance;
-      notice.version = version_;
+      notice.version = uint32_t(version_);
+      notice.goal = goal;
       // Greedy only: a flood to every module around every cell would cost far more than a
       // distance some module misses (it learns it from the next version, or a neighbour).
       notice.hopsLeft = kGreedyOnly;

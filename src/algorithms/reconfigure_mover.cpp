@@ -22,6 +22,10 @@ void ReconfigureProgram::onWatchdog(Context& context, uint32_t round) {
   } else if (phase_ == Phase::kConfirming) {
     waitingReplies_ = 0;
     retryLater(context);
+  } else if (phase_ == Phase::kClaiming) {
+    // The claim or its answer lost (a registry that moved, a route cut): a claim only saves
+    // motions, so the mover goes as if no claim were made.
+    go(context, claimedCandidate_, claimedSideways_);
   } else if (phase_ == Phase::kDeforming) {
     // An answer lost on its way back: the helper's compressed piston may have cut the latches
     // its request came by, and on a thin part (an arch's top) no other route is within reach.
@@ -47,6 +51,7 @@ void ReconfigureProgram::step(Context& context) {
   candidateDistances_.assign(candidates_.size(), kUnknown);
   candidateVersions_.assign(candidates_.size(), 0);
   candidateSettled_.assign(candidates_.size(), false);
+  candidateGoals_.assign(candidates_.size(), GoalOffset{});
   waitingReplies_ = int(candidates_.size());
   phase_ = Phase::kAsking;
   for (size_t i = 0; i < candidates_.size(); ++i) {
@@ -169,6 +174,12 @@ void ReconfigureProgram::choose(Context& context) {
     return retryLater(context);
   }
   roundsWithoutDescent_ = 0;
+  if (!claimants_ || falling || leavingFor_) return go(context, best, sideways);
+  claimOrGo(context, best, sideways);
+}
+
+void ReconfigureProgram::go(Context& context, int best, bool sideways) {
+  const uint64_t newest = *std::max_element(candidateVersions_.begin(), candidateVersions_.end());
   chosenSideways_ = sideways;
   chosenAt_ = context.now();
   chosen_ = candidates_[best];
@@ -282,6 +293,7 @@ void ReconfigureProgram::onMotionEnded(Context& context, const MotionEnded& ende
     return;
   }
   ++motions_;
+  denials_ = 0;
   sidewaysMotions_ = chosenSideways_ ? sidewaysMotions_ + 1 : 0;
   lastMotionTook_ = context.now() - chosenAt_;
   leavingFor_.reset();

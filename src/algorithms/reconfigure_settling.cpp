@@ -204,6 +204,7 @@ void ReconfigureProgram::stepIntoPocket(Context& context) {
   candidateDistances_.assign(1, 0);
   candidateVersions_.assign(1, version_);
   candidateSettled_.assign(1, true);
+  candidateGoals_.assign(1, GoalOffset{});
   standing_ = kUnknown;
   choose(context);
 }

@@ -89,11 +89,11 @@ Result<std::unique_ptr<ProgramSet>> makePrograms(std::string_view name,
   const auto kind = programKind(name, added);
   if (!kind.ok()) return Error{kind.error()};
   if (!kind->entry) {
-    if (!parameters.given.empty()) {
-      return Error{fmt::format("program {} has no parameter \"{}\" (it takes none)", name,
-                               parameters.given.begin()->first)};
-    }
-    return kind->make(parameters, moduleCount);
+    auto checked = Parameters::check(name, kind->parameters, parameters.given);
+    if (!checked.ok()) return Error{checked.error()};
+    ProgramParameters withChecked = parameters;
+    withChecked.checked = std::move(checked).value();
+    return kind->make(withChecked, moduleCount);
   }
   const ProgramEntry& entry = *kind->entry;
   auto checked = Parameters::check(name, entry.parameters, parameters.given);

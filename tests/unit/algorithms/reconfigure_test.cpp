@@ -209,5 +209,43 @@ TEST(Reconfigure, ATargetNoMotionCanEnterIsRefusedBeforeTheRun) {
             "(docs/reconfiguration.md, \"Infeasible cases\")");
 }
 
+// Claims on open cells (--param claims=1): the movers racing one mover to its cell wait instead,
+// so the same case takes fewer motions, still builds, and runs the same at the same seed.
+TEST(Reconfigure, ClaimsOnOpenCellsSaveMotions) {
+  scene::ReshapeCase reshape = *scene::randomReshape(12, 12, 40, /*seed=*/1);
+  auto request = reconfigure(reshape.target);
+  const auto racing = experiment::runProgram(reshape.world, table(), request);
+  request.parameters["claims"] = "1";
+  request.trace = true;
+  const auto claiming = experiment::runProgram(reshape.world, table(), request);
+  ASSERT_TRUE(racing.ok() && claiming.ok());
+  ASSERT_FALSE(claiming->failure) << *claiming->failure;
+  expectBuilt(*racing, reshape.target);
+  expectBuilt(*claiming, reshape.target);
+  EXPECT_EQ(racing->statistics.messagesByType.count("ClaimMsg"), 0u);
+  EXPECT_GT(claiming->statistics.messagesByType.at("ClaimMsg"), 0u);
+  EXPECT_LT(claiming->statistics.motions * 5, racing->statistics.motions * 4)
+      << claiming->statistics.motions << " motions with claims, " << racing->statistics.motions
+      << " without";
+  const auto again = experiment::runProgram(reshape.world, table(), request);
+  ASSERT_TRUE(again.ok());
+  EXPECT_EQ(again->trace, claiming->trace);
+}
+
+TEST(Reconfigure, ABadClaimsValueIsRefusedNamingIt) {
+  scene::ReshapeCase reshape = *scene::lineToBlock(8);
+  auto request = reconfigure(reshape.target);
+  request.parameters["claims"] = "13";
+  const auto tooMany = experiment::runProgram(reshape.world, table(), request);
+  ASSERT_FALSE(tooMany.ok());
+  EXPECT_EQ(tooMany.error(),
+            "parameter claims of program reconfigure: \"13\" is out of its range, 0 to 12");
+  request.parameters = {{"claim", "1"}};
+  const auto unknown = experiment::runProgram(reshape.world, table(), request);
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_EQ(unknown.error(),
+            "program reconfigure has no parameter \"claim\" (its parameters: claims)");
+}
+
 }  // namespace
 }  // namespace datomsim::algorithms

@@ -32,9 +32,7 @@ class EntryPrograms final : public ProgramSet {
   // alphabetical order) with each module's value by cell. The values are read from the programs
   // as the output is written, not copied out: a million modules' reports would be 24 MB more.
   void report(const RunEnd& end, RunReport& out) const override {
-    RunReport::Record given;
-    for (const auto& [name, value] : given_) given.push_back({name, value});
-    out.add("parameters", std::move(given));
+    out.add("parameters", RunReport::recordOf(given_));
     out.add("stopped_at_limit", end.stoppedAtLimit);
     for (const std::string& key : keys(end.modules.count)) {
       // The ended run is kept for as long as the section is: it reads the programs and the world.

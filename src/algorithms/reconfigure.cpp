@@ -179,10 +179,7 @@ class ReconfigurePrograms final : public ProgramsBySlot<ReconfigureProgram> {
   // The run's driver reports the shape built (experiment/reshape.h); the program adds the
   // parameters given, if any (a run with the defaults writes what it always wrote).
   void report(const RunEnd&, RunReport& out) const override {
-    if (given_.empty()) return;
-    RunReport::Record given;
-    for (const auto& [name, value] : given_) given.push_back({name, value});
-    out.add("parameters", std::move(given));
+    if (!given_.empty()) out.add("parameters", RunReport::recordOf(given_));
   }
 
   std::vector<ModuleState> unfinished() const override {

@@ -114,7 +114,8 @@ struct GoalReply {
 // With claims on, a mover claims the open cell it heads for before each motion: the claim goes to
 // the cell's registry, a module beside it (ReconfigureProgram::registryOf), which grants it to the
 // nearest movers and refuses the others, who wait instead of all walking to one cell (docs/
-// reconfiguration.md, "Claims"). A claim lapses after `leaseMs` unless its mover claims again.
+// reconfiguration.md, "Claims on open cells"). A claim lapses after `leaseMs` unless its mover
+// claims again.
 struct ClaimMsg : RoutedMsg {
   static constexpr std::string_view kName = "ClaimMsg";
   geometry::Cell goal;
@@ -148,7 +149,8 @@ class ReconfigureProgram : public Program {
 
   // `helperTerms` must outlive the program (its set's, helperTerms); `pistonWait` is how much
   // longer than the fixed times a helper's piston may take to answer (ActuationWaits::piston);
-  // `claimants`: how many movers nearer than it an open cell is granted to (0: no claims).
+  // `claimants`: how many nearer claimants a mover may have and still be granted its open cell
+  // (0: no claims).
   ReconfigureProgram(std::shared_ptr<const TargetShape> target,
                      const HelperDuty::Terms& helperTerms, Time pistonWait, int claimants)
       : target_(std::move(target)),

@@ -1,6 +1,6 @@
-// Claims on open cells (docs/reconfiguration.md, "Claims"): with claims on, a mover asks the
-// registry of the open cell it heads for before each motion; a mover with enough nearer rivals
-// waits where it is instead of racing them to a cell one of them fills, and turning back.
+// Claims on open cells (docs/reconfiguration.md, "Claims on open cells"): with claims on, a mover
+// asks the registry of the open cell it heads for before each motion; a mover with enough nearer
+// rivals waits where it is instead of racing them to a cell one of them fills, and turning back.
 #include <algorithm>
 #include <array>
 

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,6 +35,13 @@ class RunReport {
     std::string key;
     Value value;
   };
+
+  // Text values by name as a record: a program's parameters as given.
+  static Record recordOf(const std::map<std::string, std::string>& texts) {
+    Record record;
+    for (const auto& [name, text] : texts) record.push_back({name, text});
+    return record;
+  }
 
   void add(std::string key, Value value) {
     sections_.push_back({std::move(key), std::move(value)});

@@ -8,21 +8,26 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# Each step says when it starts, to show in a CI log where the time goes.
+step() {
+  printf '== %s (at %d min %02d s)\n' "$1" $((SECONDS / 60)) $((SECONDS % 60))
+}
+
 scripts/install-deps.sh
 scripts/check-format.sh
 
-echo "== release build and tests"
+step "release build and tests"
 scripts/build.sh release
 ctest --test-dir build/release --output-on-failure -j "$(nproc)"
 
-echo "== examples: installed to a temporary prefix, built and run outside the tree"
+step "examples: installed to a temporary prefix, built and run outside the tree"
 scripts/test-examples.sh
 
-echo "== sanitizer build and tests"
+step "sanitizer build and tests"
 scripts/build.sh sanitize
 ctest --test-dir build/sanitize --output-on-failure -j "$(nproc)"
 
-echo "== determinism: the same run at -O0 (sanitize) and -O2 (release)"
+step "determinism: the same run at -O0 (sanitize) and -O2 (release)"
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
 for flavour in release sanitize; do
@@ -47,16 +52,17 @@ echo "traces identical ($(wc -l < "$scratch/release.jsonl"), " \
   "$(wc -l < "$scratch/release-walkers.jsonl"), $(wc -l < "$scratch/release-heap.jsonl") and" \
   "$(wc -l < "$scratch/release-catoms.jsonl") lines)"
 
-echo "== fuzzing: each reader of user input for 30 s (scripts/fuzz.sh)"
+step "fuzzing: each reader of user input for 30 s (scripts/fuzz.sh)"
 scripts/fuzz.sh 30
 
-echo "== benchmarks (smoke run)"
+step "benchmarks (smoke run)"
 scripts/bench.sh --smoke
 
 if [[ "${DATOMSIM_SKIP_BROWSER:-0}" != 1 ]]; then
-  echo "== viewer: unit tests, then end to end in headless Chromium"
+  step "viewer: unit tests, then end to end in headless Chromium"
   npm --prefix viewer test
   node viewer/e2e/view.e2e.mjs --datomsim build/release/bin/datomsim --shots build/viewer-shots
   node viewer/e2e/colours.e2e.mjs --datomsim build/release/bin/datomsim --shots build/viewer-shots
   node viewer/e2e/studio.e2e.mjs --datomsim build/release/bin/datomsim --shots build/viewer-shots
 fi
+step "all checks passed"

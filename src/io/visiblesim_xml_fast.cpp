@@ -36,7 +36,10 @@ class BlockScanner {
     region.begin = at_;
     for (;;) {
       while (at_ < text_.size() && isSpace(text_[at_])) region.newlines += text_[at_++] == '\n';
-      if (text_.substr(at_).starts_with("</blockList")) break;
+      if (text_.substr(at_).starts_with("</blockList")) {
+        if (!endTagCloses(at_ + 11)) return std::nullopt;
+        break;
+      }
       if (!text_.substr(at_).starts_with("<block") || at_ + 6 >= text_.size() ||
           !(isSpace(text_[at_ + 6]) || text_[at_ + 6] == '/')) {
         return std::nullopt;
@@ -51,6 +54,14 @@ class BlockScanner {
   }
 
  private:
+  // Whether the end tag whose name ends before `from` is closed as XML says, by spaces and ">":
+  // tinyxml2 reads a malformed one such as "</blockList/>" in ways of its own, and what it
+  // makes of the text after the blocks must be what it makes of the whole document.
+  bool endTagCloses(size_t from) const {
+    while (from < text_.size() && isSpace(text_[from])) ++from;
+    return from < text_.size() && text_[from] == '>';
+  }
+
   // Moves past the start tag of the <blockList> that is a child of the root element. Before it
   // only tags and text: no comment, CDATA or DTD declaration (a "<blockList" inside one of those
   // would not be an element).

@@ -200,6 +200,9 @@ TEST(XmlFastPath, DeclinesWhatItDoesNotReadAndTheGeneralReaderWordsIt) {
       withBlocks(R"(<block position="1,2,0"/>text)"),
       withBlocks(R"(<cell position="1,2,0"/>)"),
       withBlocks(R"(<block position="1,2,0"orientation="2"/>)"),
+      // An end tag tinyxml2 reads in a way of its own (found by the fuzzer).
+      R"(<world><blockList><block position="0,0,8"/></blockList/><block position="0,0,0"/></blockList></world>)",
+      withBlocks(R"(<block position="1,2,0"/></blockListing>)"),
       // A comment before the list, or the list inside another element.
       R"(<!-- --><world><blockList><block position="1,2,0"/></blockList></world>)",
       R"(<world><group><blockList><block position="1,2,0"/></blockList></group></world>)",

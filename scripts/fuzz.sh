@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the fuzz harnesses (fuzz/) with Clang's libFuzzer, AddressSanitizer and
-# UndefinedBehaviorSanitizer, and runs each for SECONDS (default 30) from its corpus in fuzz/corpus
-# (copied: new inputs stay in the build folder). A crash, a sanitizer report or a broken property
-# stops the script with the input that caused it (build/fuzz/crashes/). Then (or when FUZZER is
+# UndefinedBehaviorSanitizer, in the sanitized build (scripts/build.sh sanitize), and runs each
+# for SECONDS (default 30) from its corpus in fuzz/corpus (copied: new inputs stay in build/fuzz).
+# A crash, a sanitizer report or a broken property stops the script with the input that caused it
+# (build/fuzz/crashes/). Then (or when FUZZER is
 # "python") hypothesis over the Python package's public functions, python/tests/test_fuzz.py, with
 # DATOMSIM_FUZZ_EXAMPLES examples each (default 2000), when the release build has the package.
 #   scripts/fuzz.sh [SECONDS] [FUZZER...]
@@ -43,13 +44,9 @@ if ((${#fuzzers[@]} == 0)); then
   exit 0
 fi
 
-mkdir -p build
-log=build/fuzz.log
-cmake -S . -B build/fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DDATOMSIM_FUZZ=ON -DDATOMSIM_BUILD_TESTS=OFF -DDATOMSIM_BUILD_BENCHMARKS=OFF > "$log" 2>&1 ||
-  { cat "$log" >&2; exit 1; }
-cmake --build build/fuzz -j "$(nproc)" --target "${fuzzers[@]}" >> "$log" 2>&1 ||
-  { grep -E "error" -A5 "$log" | head -40 >&2; echo "fuzz.sh: full log in $log" >&2; exit 1; }
+# The harnesses are part of the sanitized build (scripts/build.sh sanitize); their inputs, logs
+# and crashes are kept in build/fuzz.
+scripts/build.sh sanitize "${fuzzers[@]}"
 
 mkdir -p build/fuzz/crashes
 for fuzzer in "${fuzzers[@]}"; do
@@ -57,7 +54,7 @@ for fuzzer in "${fuzzers[@]}"; do
   mkdir -p "$corpus"
   cp -n "fuzz/corpus/${fuzzer%_fuzzer}"/* "$corpus"/ 2> /dev/null || true
   # One process, no leak reports from the tools' own caches; a crash leaves its input.
-  if ! "build/fuzz/fuzz/$fuzzer" -max_total_time="$seconds" -print_final_stats=1 \
+  if ! "build/sanitize/fuzz/$fuzzer" -max_total_time="$seconds" -print_final_stats=1 \
     -artifact_prefix="build/fuzz/crashes/$fuzzer-" "$corpus" > "build/fuzz/$fuzzer.log" 2>&1; then
     tail -40 "build/fuzz/$fuzzer.log" >&2
     echo "fuzz.sh: $fuzzer failed; the input is in build/fuzz/crashes/" >&2

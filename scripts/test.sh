@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds datomsim and runs every check: formatting, the unit and scenario tests (release build,
 # warnings as errors), the examples/ built against the installed package, the same tests under
-# AddressSanitizer and UndefinedBehaviorSanitizer, a determinism check across optimisation
-# levels, 30 s of fuzzing of every reader of user input, a smoke run of the benchmarks, and the
-# viewer's tests (unit, then end to end in headless Chromium; DATOMSIM_SKIP_BROWSER=1 skips them).
+# AddressSanitizer and UndefinedBehaviorSanitizer (Clang), a determinism check across compilers
+# and optimisation levels, 30 s of fuzzing of every reader of user input, a smoke run of the
+# benchmarks, and the viewer's tests (unit, then end to end in headless Chromium;
+# DATOMSIM_SKIP_BROWSER=1 skips them).
 # Exits non-zero on the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,11 +24,11 @@ ctest --test-dir build/release --output-on-failure -j "$(nproc)"
 step "examples: installed to a temporary prefix, built and run outside the tree"
 scripts/test-examples.sh
 
-step "sanitizer build and tests"
+step "sanitizer build (Clang, with the fuzz harnesses) and tests"
 scripts/build.sh sanitize
 ctest --test-dir build/sanitize --output-on-failure -j "$(nproc)"
 
-step "determinism: the same run at -O0 (sanitize) and -O2 (release)"
+step "determinism: the same run built by Clang at -O1 (sanitize) and by GCC at -O2 (release)"
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
 for flavour in release sanitize; do

@@ -154,7 +154,9 @@ void addCompareCommand(CLI::App& app, const Reporter& reporter) {
       ++(entered ? cutOff : solid ? needsSolid : needsEmptied);
     }
 
-    for (const auto& [side, file] : {std::pair{&datom, datomFile}, std::pair{&catom, catomFile}}) {
+    for (const auto& [written, file] :
+         {std::pair{&datom, datomFile}, std::pair{&catom, catomFile}}) {
+      const Side* side = written;  // a structured binding is not captured before Clang 16
       files.write(file, [&](std::FILE* out) {
         return frontend::writeReachJson(side->reached->map, side->reached->path, side->model, out);
       });

@@ -6,6 +6,7 @@
 
 #include <compare>
 #include <cstdint>
+#include <ostream>
 #include <string>
 
 namespace datomsim {
@@ -30,10 +31,8 @@ inline std::string toString(const Cell& cell) {
 }
 
 // Test frameworks and logs print cells as (x,y,z).
-template <typename Stream>
-Stream& operator<<(Stream& out, const Cell& cell) {
-  out << '(' << cell.x << ',' << cell.y << ',' << cell.z << ')';
-  return out;
+inline std::ostream& operator<<(std::ostream& out, const Cell& cell) {
+  return out << '(' << cell.x << ',' << cell.y << ',' << cell.z << ')';
 }
 
 }  // namespace datomsim

@@ -10,6 +10,18 @@
 
 #include "command_line.h"
 
+// GCC says so with __SANITIZE_ADDRESS__, Clang with __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define DATOMSIM_UNDER_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define DATOMSIM_UNDER_ADDRESS_SANITIZER 1
+#endif
+#endif
+#ifndef DATOMSIM_UNDER_ADDRESS_SANITIZER
+#define DATOMSIM_UNDER_ADDRESS_SANITIZER 0
+#endif
+
 namespace datomsim {
 namespace {
 
@@ -127,7 +139,7 @@ TEST_F(BadInput, SizesBeyondTheLimitsAreRefusedUpFront) {
 // Within the module limit but beyond what the process may take: refused before anything is
 // allocated, rather than killed half-way. The limit is set as a user would, with ulimit -v.
 TEST_F(BadInput, ABoxBeyondTheMemoryAvailableIsRefusedUpFront) {
-#if defined(__SANITIZE_ADDRESS__)
+#if DATOMSIM_UNDER_ADDRESS_SANITIZER
   GTEST_SKIP() << "AddressSanitizer reserves more address space than ulimit -v allows";
 #else
   const Outcome outcome = shell("ulimit -v 1000000 && " + std::string(DATOMSIM_BINARY) +
@@ -143,7 +155,7 @@ TEST_F(BadInput, ABoxBeyondTheMemoryAvailableIsRefusedUpFront) {
 
 // The same for the other generators that can be asked for scenes of millions of modules.
 TEST_F(BadInput, OtherGeneratorsBeyondTheMemoryAvailableAreRefusedUpFront) {
-#if defined(__SANITIZE_ADDRESS__)
+#if DATOMSIM_UNDER_ADDRESS_SANITIZER
   GTEST_SKIP() << "AddressSanitizer reserves more address space than ulimit -v allows";
 #else
   const std::vector<std::pair<std::string, std::string> > cases = {

@@ -255,7 +255,7 @@ TEST(RollReach, EveryCellOnTheMapHasARollOneStepCloser) {
     const auto path = CatomRolls(rules).followGradient(world, *map, {0, 0, 2});
     ASSERT_TRUE(path.ok()) << path.error();
     EXPECT_EQ(int(path->size()), *map->distanceAt({0, 0, 2}));
-    EXPECT_EQ(path->back().goal, Cell(2, 2, 2));
+    EXPECT_EQ(path->back().goal, (Cell{2, 2, 2}));
   }
 }
 

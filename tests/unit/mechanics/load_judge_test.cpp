@@ -152,7 +152,7 @@ TEST(LoadJudge, AMobileHangingAtTheTipOfAnArmLoadsItsRootAsALongerArmWould) {
   ASSERT_TRUE(refused.has_value());
   EXPECT_NE(refused->text.find(latchName(longer) + "would carry"), std::string::npos)
       << refused->text;
-  EXPECT_EQ(refused->moverAt, geometry::Cell(5, 0, 2));
+  EXPECT_EQ(refused->moverAt, (geometry::Cell{5, 0, 2}));
   LoadJudge loose(scaledSoThat(longer.safety, 1.001));
   EXPECT_FALSE(loose.judge(world, {{}, {}, hanging}).has_value());
 
@@ -160,7 +160,7 @@ TEST(LoadJudge, AMobileHangingAtTheTipOfAnArmLoadsItsRootAsALongerArmWould) {
   const std::array<geometry::Cell, 2> way = {geometry::Cell{4, 0, 3}, geometry::Cell{5, 0, 2}};
   const auto onTheWay = tight.judge(world, {{}, {}, Mover{hanging.module, hanging.pivot, way, {}}});
   ASSERT_TRUE(onTheWay.has_value());
-  EXPECT_EQ(onTheWay->moverAt, geometry::Cell(5, 0, 2));
+  EXPECT_EQ(onTheWay->moverAt, (geometry::Cell{5, 0, 2}));
   EXPECT_EQ(tight.counts().solves, 2u);
 }
 

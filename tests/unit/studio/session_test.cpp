@@ -247,7 +247,9 @@ TEST(StudioSession, MovesAtACellAreTheCommandLines) {
 // The run as the command line runs it, with the same arguments. (GCC 12 at -O3 warns of an
 // overlap in assigning the literals, a false positive: its bug 105329.)
 #pragma GCC diagnostic push
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wrestrict"
+#endif
 frontend::RunOutput commandLineRun() {
   frontend::RunArguments args;
   args.program = "follow-gradient";

@@ -3,9 +3,9 @@
 # UndefinedBehaviorSanitizer, in the sanitized build (scripts/build.sh sanitize), and runs each
 # for SECONDS (default 30) from its corpus in fuzz/corpus (copied: new inputs stay in build/fuzz).
 # A crash, a sanitizer report or a broken property stops the script with the input that caused it
-# (build/fuzz/crashes/). Then (or when FUZZER is
-# "python") hypothesis over the Python package's public functions, python/tests/test_fuzz.py, with
-# DATOMSIM_FUZZ_EXAMPLES examples each (default 2000), when the release build has the package.
+# (build/fuzz/crashes/). Then (or when FUZZER is "python") hypothesis over the Python package's
+# public functions, python/tests/test_fuzz.py, with DATOMSIM_FUZZ_EXAMPLES examples each (default
+# 2000), when the release build has the package.
 #   scripts/fuzz.sh [SECONDS] [FUZZER...]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -36,8 +36,8 @@ class BlockScanner {
     region.begin = at_;
     for (;;) {
       while (at_ < text_.size() && isSpace(text_[at_])) region.newlines += text_[at_++] == '\n';
-      if (text_.substr(at_).starts_with("</blockList")) {
-        if (!endTagCloses(at_ + 11)) return std::nullopt;
+      if (constexpr std::string_view kEnd = "</blockList"; text_.substr(at_).starts_with(kEnd)) {
+        if (!endTagCloses(at_ + kEnd.size())) return std::nullopt;
         break;
       }
       if (!text_.substr(at_).starts_with("<block") || at_ + 6 >= text_.size() ||

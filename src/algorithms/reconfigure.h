@@ -250,6 +250,9 @@ class ReconfigureProgram : public Program {
   // For a mover off the target asked by one about to fill a cell beside it: whether it has a
   // motion left about a pivot on the target (one about another mover may go with that mover).
   bool keepsAWayOut(Context& context) const;
+  // Whether an empty cell off the target borders `cell` on its layer; `leaving` counts as empty.
+  bool bordersFreeOffTarget(Context& context, const geometry::Cell& cell,
+                            std::optional<geometry::Cell> leaving) const;
   // Whether this mover's cell is open and not one it gave up for a mover it would wall in.
   bool mayFillOwnCell(Context& context) const;
   void answerFill(Context& context, const FillQuery& query);
@@ -281,12 +284,19 @@ class ReconfigureProgram : public Program {
   void attemptFailed();
   // Whether a goal lies on the bare ground outside the target, where a mover never goes.
   bool offTheEnsemble(const geometry::Cell& goal) const;
+  // Whether a goal is a pit: a cell off the target with no empty cell off the target beside it on
+  // its layer, whose only ways out go over the top, about pivots that may leave.
+  bool isPit(Context& context, const geometry::Cell& goal) const;
+  // The goals a mover never takes: off the ensemble, or a pit.
+  bool avoided(Context& context, const geometry::Cell& goal) const {
+    return offTheEnsemble(goal) || isPit(context, goal);
+  }
   // A candidate's distance with the failures at its goal counted against it.
   int64_t effective(int candidate) const;
   // What a candidate's way has cost so far: its helpers, the failures at its goal, the visits.
   int64_t tried(int candidate) const;
   // For a mover that the gradient has not reached: the candidate that takes it lowest, or -1.
-  int fallingMotion(const Context& context) const;
+  int fallingMotion(Context& context) const;
   // A helper's AckDeform or NackDeform.
   void onHelperAnswer(Context& context, const RoutedMsg& answer, bool granted);
   void move(Context& context);

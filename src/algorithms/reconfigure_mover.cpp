@@ -104,14 +104,23 @@ bool ReconfigureProgram::offTheEnsemble(const Cell& goal) const {
   return goal.z == 0 && !target_->contains(goal);
 }
 
-int ReconfigureProgram::fallingMotion(const Context& context) const {
+bool ReconfigureProgram::isPit(Context& context, const Cell& goal) const {
+  // A random reshape's last mover stepped down into a hole of the target's second layer walled in
+  // by settled modules, about a mover above it; that mover left, and no motion was left to it:
+  // a motion up out of a cell needs its neighbours on the layer empty. The gradient may pass
+  // through such a cell, but no way needs it: it leads nowhere but up again.
+  // A cell beyond the senses (two steps) counts as occupied: a goal that may be a pit is one.
+  return !target_->contains(goal) && !bordersFreeOffTarget(context, goal, context.cell());
+}
+
+int ReconfigureProgram::fallingMotion(Context& context) const {
   // The lowest goal, in quarter motions per layer as effective() counts a distance; then the
   // same costs of the way as there.
   int best = -1;
   int64_t bestCost = 0;
   for (size_t i = 0; i < candidates_.size(); ++i) {
     const Cell& goal = candidates_[i].goal;
-    if (offTheEnsemble(goal)) continue;
+    if (avoided(context, goal)) continue;
     const int64_t cost = 4 * int64_t(goal.z - context.cell().z) + tried(int(i));
     if (best < 0 || cost < bestCost) {
       best = int(i);
@@ -131,7 +140,7 @@ void ReconfigureProgram::choose(Context& context) {
   for (const bool settledPivot : {true, false}) {
     for (size_t i = 0; i < candidates_.size(); ++i) {
       if (candidateVersions_[i] != newest || candidateDistances_[i] == kUnknown ||
-          candidateSettled_[i] != settledPivot || offTheEnsemble(candidates_[i].goal)) {
+          candidateSettled_[i] != settledPivot || avoided(context, candidates_[i].goal)) {
         continue;
       }
       if (best < 0 || effective(int(i)) < effective(best)) best = int(i);
@@ -313,6 +322,12 @@ void ReconfigureProgram::onMotionEnded(Context& context, const MotionEnded& ende
   standing_ = chosenDistance_;
   standingVersion_ = chosenVersion_;
   arrivedAt_ = context.now();
+  // What this module knew of its neighbour cells was indexed by direction from the cell it left:
+  // kept, it would answer the neighbours' goal queries with the distances of other cells.
+  distances_.fill(kUnknown);
+  goals_.fill(GoalOffset{});
+  unspread_ = 0;
+  seedOpenCells(context);
   if (chosen_) seedLeftCell(context, chosen_->from);
   idleRounds_ = 0;
   retryAfterRelease_ = false;

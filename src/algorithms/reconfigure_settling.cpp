@@ -108,6 +108,23 @@ void ReconfigureProgram::settle(Context& context) {
   }
 }
 
+bool ReconfigureProgram::bordersFreeOffTarget(Context& context, const Cell& cell,
+                                              std::optional<Cell> leaving) const {
+  // An empty cell off the target around `cell` on its layer (a neighbour, or a diagonal along a
+  // piston axis) stays empty: no module fills it for good, and a mover keeps a way out through it.
+  // `leaving`: a cell that will be empty by then (the mover's own, as it leaves it).
+  auto freeOffTarget = [&](const Cell& next) {
+    return !target_->contains(next) && (next == leaving || !context.occupied(next).value_or(true));
+  };
+  for (const int side : kSameLayer) {
+    if (freeOffTarget(cell + geometry::neighbourOffset(side))) return true;
+  }
+  for (int axis = 0; axis < 4; ++axis) {  // the axes along the layer
+    if (freeOffTarget(cell + geometry::doubledAxis(axis))) return true;
+  }
+  return false;
+}
+
 bool ReconfigureProgram::keepsAWayOut(Context& context) const {
   // On its way out already. Not while its helpers compress or it waits for the way: that motion
   // may still be refused, and it may have been about another mover.
@@ -117,16 +134,7 @@ bool ReconfigureProgram::keepsAWayOut(Context& context) const {
   // cell, which no module fills for good. Refusing fills around the others (on a tall mound,
   // movers climb about movers) held the settling back for nothing: a fifth more motions on the
   // benchmark suite's tall random cases.
-  const Cell here = context.cell();
-  auto freeOffTarget = [&](const Cell& cell) {
-    return !target_->contains(cell) && !context.occupied(cell).value_or(true);
-  };
-  for (const int side : kSameLayer) {
-    if (freeOffTarget(here + geometry::neighbourOffset(side))) return true;
-  }
-  for (int axis = 0; axis < 4; ++axis) {  // the axes along the layer
-    if (freeOffTarget(here + geometry::doubledAxis(axis))) return true;
-  }
+  if (bordersFreeOffTarget(context, context.cell(), std::nullopt)) return true;
   // The asker stands in the cell it would fill: the motions left are those the fill leaves. One
   // about another mover does not count: that pivot may leave, and the way with it (a random
   // reshape's last mover, in a hole of the target's second layer, had its last ways about a mover

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "experiment/run.h"
@@ -194,6 +196,65 @@ TEST(Reconfigure, AFillThatWouldWallAMoverInWaitsForItToLeave) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     expectBuilt(*run, target);
   }
+}
+
+// A mover never moves into a pit: a cell off the target with no empty cell off the target around
+// it on its layer, whose ways out are about pivots above that may leave (docs/reconfiguration.md,
+// "Pits"). Replayed from the trace, every motion's goal is checked as it was when the motion
+// began. In this case of a stress draw, two motions went into pits before the rule.
+TEST(Reconfigure, MoversNeverStepIntoAPit) {
+  const scene::ReshapeCase reshape = *scene::randomReshape(12, 12, 43, /*seed=*/832289);
+  auto request = reconfigure(reshape.target, /*seed=*/958063);
+  request.simulation.connectivity = false;  // as `datomsim run` does by default
+  request.simulation.rules.connectivity = false;
+  request.trace = true;
+  const auto run = experiment::runProgram(reshape.world, table(), request);
+  ASSERT_TRUE(run.ok()) << run.error();
+  ASSERT_FALSE(run->failure) << *run->failure;
+  expectBuilt(*run, reshape.target);
+
+  const std::set<Cell> target(reshape.target.begin(), reshape.target.end());
+  std::map<uint64_t, Cell> cellOf;
+  std::set<Cell> occupied;
+  auto cell = [](const nlohmann::json& c) {
+    return Cell{c[0].get<int32_t>(), c[1].get<int32_t>(), c[2].get<int32_t>()};
+  };
+  std::istringstream lines(run->trace);
+  std::string line;
+  std::getline(lines, line);
+  const nlohmann::json header = nlohmann::json::parse(line);
+  for (const auto& module : header["modules"]) {
+    cellOf[module["id"].get<uint64_t>()] = cell(module["cell"]);
+    occupied.insert(cell(module["cell"]));
+  }
+  const std::vector<Cell> aroundOnLayer = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},   {0, -1, 0},
+                                           {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}, {1, -1, 0}};
+  int motions = 0;
+  while (std::getline(lines, line)) {
+    const auto event = nlohmann::json::parse(line);
+    if (event.contains("motion")) {
+      ++motions;
+      const Cell goal = cell(event["motion"]["goal"]);
+      const uint64_t mover = event["motion"]["m"];
+      ASSERT_TRUE(cellOf.count(mover)) << line;
+      const Cell from = cellOf.at(mover);
+      const bool pit =
+          !target.count(goal) &&
+          std::none_of(aroundOnLayer.begin(), aroundOnLayer.end(), [&](const Cell& offset) {
+            const Cell next = goal + offset;
+            return !target.count(next) && (next == from || !occupied.count(next));
+          });
+      EXPECT_FALSE(pit) << "at " << event["t"] << " s a mover went from " << from
+                        << " into the pit " << goal;
+    } else if (event.contains("place")) {
+      const uint64_t id = event["place"]["m"];
+      ASSERT_TRUE(cellOf.count(id)) << line;
+      occupied.erase(cellOf.at(id));
+      cellOf[id] = cell(event["place"]["cell"]);
+      occupied.insert(cellOf[id]);
+    }
+  }
+  EXPECT_GT(motions, 200);
 }
 
 // A target that no motion can complete is refused before the run, the cells named: in a world one

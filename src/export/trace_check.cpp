@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "common/json_nesting.h"
+#include "export/json_checks.h"
 #include "world/module_kind.h"
 
 namespace datomsim::exporting {
@@ -16,15 +17,8 @@ namespace {
 
 using Json = nlohmann::json;
 
-// JavaScript's notions, which the viewer's checks use.
-bool isFiniteNumber(const Json& v) {
-  return v.is_number() && std::isfinite(v.get<double>());
-}
-bool isInteger(const Json& v) {
-  if (v.is_number_integer()) return true;
-  return v.is_number_float() && std::isfinite(v.get<double>()) &&
-         std::floor(v.get<double>()) == v.get<double>();
-}
+using detail::isFiniteNumber;
+using detail::isInteger;
 bool isVec3(const Json& v) {
   return v.is_array() && v.size() == 3 && isFiniteNumber(v[0]) && isFiniteNumber(v[1]) &&
          isFiniteNumber(v[2]);

@@ -94,7 +94,7 @@ Result<Json> parseSpan(const std::string& text, const ValueSpan& span, const std
   return value;
 }
 
-bool isCell(const Json& value) {
+bool isIntegerTriple(const Json& value) {
   return value.is_array() && value.size() == 3 &&
          std::all_of(value.begin(), value.end(),
                      [](const Json& x) { return x.is_number_integer(); });
@@ -283,12 +283,12 @@ Result<std::string> checkOverlay(const std::string& text, const std::string& nam
     const Json& path = overlay["path"];
     if (!path.is_array()) return Error{fmt::format("{}: \"path\" is not a list", name)};
     for (size_t k = 0; k < path.size(); ++k) {
-      if (!isCell(path[k])) {
+      if (!isIntegerTriple(path[k])) {
         return Error{fmt::format("{}: path[{}] is {}, not [x,y,z]", name, k, path[k].dump())};
       }
     }
   }
-  if (overlay.contains("goal") && !isCell(overlay["goal"])) {
+  if (overlay.contains("goal") && !isIntegerTriple(overlay["goal"])) {
     return Error{fmt::format("{}: \"goal\" is {}, not [x,y,z]", name, overlay["goal"].dump())};
   }
   return overlay.dump();

@@ -15,7 +15,7 @@ namespace datomsim::frontend {
 
 namespace {
 
-nlohmann::ordered_json cellJson(const geometry::Cell& cell) {
+nlohmann::ordered_json cellArray(const geometry::Cell& cell) {
   return nlohmann::ordered_json::array({cell.x, cell.y, cell.z});
 }
 
@@ -45,11 +45,11 @@ void streamPlanJson(const PlanOutput& output, JsonObjectStream::Emit emit) {
   for (const planner::Step& step : plan.steps) {
     nlohmann::ordered_json motions = nlohmann::ordered_json::array();
     for (const planner::PlannedMotion& motion : step.motions) {
-      motions.push_back({motion.rule, motion.pivot.value, cellJson(motion.to)});
+      motions.push_back({motion.rule, motion.pivot.value, cellArray(motion.to)});
     }
     trips.push_back({{"module", step.module.value},
-                     {"from", cellJson(step.from)},
-                     {"to", cellJson(step.to)},
+                     {"from", cellArray(step.from)},
+                     {"to", cellArray(step.to)},
                      {"motions", std::move(motions)}});
   }
   out.field("steps", trips);

@@ -92,9 +92,6 @@ class ByteSource {
   std::vector<char> block_;
 };
 
-constexpr int64_t kInt32Min = std::numeric_limits<int32_t>::min();
-constexpr int64_t kInt32Max = std::numeric_limits<int32_t>::max();
-
 // Reads one document; every function returns false to decline.
 class FastReader {
  public:

@@ -45,9 +45,6 @@ std::optional<int64_t> integerIn(const Json& value, int64_t low, int64_t high) {
   return std::nullopt;
 }
 
-constexpr int64_t kInt32Min = std::numeric_limits<int32_t>::min();
-constexpr int64_t kInt32Max = std::numeric_limits<int32_t>::max();
-
 // Top-level and module keys, as bits for "seen" sets.
 constexpr std::array<std::string_view, 11> kTopKeys = {
     "format",     "version", "name",    "description", "grid",  "blockSize",

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <istream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,6 +23,10 @@
 #include "io/scene.h"
 
 namespace datomsim::io::detail {
+
+// The range of a cell coordinate, as the readers' integer checks take it.
+inline constexpr int64_t kInt32Min = std::numeric_limits<int32_t>::min();
+inline constexpr int64_t kInt32Max = std::numeric_limits<int32_t>::max();
 
 // Ordered, so that viewer attributes keep their file order through a round trip.
 using Json = nlohmann::ordered_json;

@@ -13,8 +13,6 @@ using geometry::Cell;
 
 namespace {
 
-// The directions that stay on a layer, and those that go one layer down.
-constexpr std::array<int, 4> kOnLayer = {0, 1, 6, 7};
 constexpr std::array<int, 4> kBelow = {8, 9, 10, 11};
 
 // Rule 4's rank of every cell: the squared distance of its centre from the centre of its layer's
@@ -54,7 +52,7 @@ FillOrder::FillOrder(const std::vector<Cell>& target) : cells_(target) {
         before_[i].push_back(*under);
       }
     }
-    for (const int d : kOnLayer) {
+    for (const int d : geometry::kSameLayerDirections) {
       const auto side = indexOf(cells_[i] + geometry::neighbourOffset(d));
       if (side && ranks[*side] < ranks[i]) before_[i].push_back(*side);
     }

@@ -27,9 +27,6 @@ using geometry::cellList;
 
 namespace {
 
-// The directions that stay on a layer.
-constexpr std::array<int, 4> kOnLayer = {0, 1, 6, 7};
-
 // Moves a module at rest to another cell, its latches following: released at the start, made
 // with every neighbour at the goal, as the simulator leaves a module at rest after a motion.
 void relocate(world::World& world, ModuleId id, const Cell& to) {
@@ -86,9 +83,9 @@ class Planner {
     for (const Cell& cell : progress_.openCells(world_)) {
       // A cell walled in on its layer is filled by a neighbour when one can: movers rarely find
       // the one way in from above, if there is one.
-      const bool walled = std::all_of(kOnLayer.begin(), kOnLayer.end(), [&](int d) {
-        return world_.moduleAt(cell + geometry::neighbourOffset(d)) != nullptr;
-      });
+      const bool walled = std::all_of(
+          geometry::kSameLayerDirections.begin(), geometry::kSameLayerDirections.end(),
+          [&](int d) { return world_.moduleAt(cell + geometry::neighbourOffset(d)) != nullptr; });
       const bool enterable = canBeEntered(cell, holdsTogether);
       if ((walled || !enterable) && fillPocket(cell, holdsTogether)) return true;
       if (enterable) goalCells.push_back(cell);

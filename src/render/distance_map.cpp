@@ -1,6 +1,7 @@
 // The distance map as files: draws the laid-out picture on a cairo image (PNG) or SVG surface,
 // makes the SVG's bytes independent of what else the process drew, and writes files atomically.
 #include "render/distance_map.h"
+#include "render/cairo_stream.h"
 
 #include <cairo-svg.h>
 #include <cairo.h>
@@ -24,11 +25,6 @@ namespace datomsim::render {
 namespace {
 
 using detail::Scene;
-
-cairo_status_t appendToString(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
 
 struct SurfaceDeleter {
   void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
@@ -114,7 +110,7 @@ Result<std::string> renderDistanceMapPng(const DistanceMapPicture& picture) {
     return Error{drawn.error()};
   std::string bytes;
   const cairo_status_t status =
-      cairo_surface_write_to_png_stream(surface.get(), appendToString, &bytes);
+      cairo_surface_write_to_png_stream(surface.get(), detail::appendToString, &bytes);
   if (status != CAIRO_STATUS_SUCCESS) return cairoError("cannot encode the PNG", status);
   return bytes;
 }
@@ -128,8 +124,8 @@ Result<std::string> renderDistanceMapSvg(const DistanceMapPicture& picture) {
   std::string bytes;
   detail::SvgCellPainter painter;
   {
-    const SurfacePtr surface(
-        cairo_svg_surface_create_for_stream(appendToString, &bytes, layout.width, layout.height));
+    const SurfacePtr surface(cairo_svg_surface_create_for_stream(detail::appendToString, &bytes,
+                                                                 layout.width, layout.height));
     // Pixels, not points, so that the SVG and the PNG have the same size on screen.
     cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
     if (Status drawn = drawOn(surface.get(), *scene, picture, layout, painter); !drawn) {
@@ -191,7 +187,7 @@ Result<std::string> renderSideBySidePng(const std::vector<DistanceMapPicture>& p
   }
   std::string bytes;
   const cairo_status_t status =
-      cairo_surface_write_to_png_stream(surface.get(), appendToString, &bytes);
+      cairo_surface_write_to_png_stream(surface.get(), detail::appendToString, &bytes);
   if (status != CAIRO_STATUS_SUCCESS) return cairoError("cannot encode the PNG", status);
   return bytes;
 }

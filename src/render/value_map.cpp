@@ -1,4 +1,5 @@
 #include "render/value_map.h"
+#include "render/cairo_stream.h"
 
 #include <cairo-svg.h>
 #include <cairo.h>
@@ -213,11 +214,6 @@ Status checkPicture(const ValueMapPicture& picture) {
   return Ok{};
 }
 
-cairo_status_t appendToString(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
-
 // Draws on a surface made by `make` and returns what it streamed into `bytes`.
 template <typename Make, typename Finish>
 Result<std::string> render(const ValueMapPicture& picture, Make make, Finish finish) {
@@ -262,7 +258,7 @@ Result<std::string> renderValueMapPng(const ValueMapPicture& picture) {
         return cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height);
       },
       [](cairo_surface_t* surface, std::string* bytes) {
-        return cairo_surface_write_to_png_stream(surface, appendToString, bytes);
+        return cairo_surface_write_to_png_stream(surface, detail::appendToString, bytes);
       });
 }
 
@@ -270,8 +266,8 @@ Result<std::string> renderValueMapSvg(const ValueMapPicture& picture) {
   return render(
       picture,
       [](const Layout& layout, std::string* bytes) {
-        cairo_surface_t* surface =
-            cairo_svg_surface_create_for_stream(appendToString, bytes, layout.width, layout.height);
+        cairo_surface_t* surface = cairo_svg_surface_create_for_stream(
+            detail::appendToString, bytes, layout.width, layout.height);
         cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
         return surface;
       },

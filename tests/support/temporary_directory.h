@@ -19,6 +19,10 @@ inline std::string readText(const std::filesystem::path& path) {
   return text.str();
 }
 
+inline void writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
 // A fresh empty directory, removed with its content at the end of the test.
 class TemporaryDirectory {
  public:

@@ -9,15 +9,12 @@
 #include "actuator_files.h"
 #include "actuators/module_demand.h"
 #include "elastic/load_parameters.h"
+#include "support/power_law.h"
 
 namespace datomsim::testing {
 namespace {
 
 using namespace actuators;
-
-double powerOfR(double at1cm, double at10cm) {
-  return std::log10(at10cm / at1cm);
-}
 
 TEST(ModuleDemand, WeighsTheModuleAsTheLoadModelDoes) {
   for (double r : {0.001, 0.01, 0.1}) {

@@ -8,6 +8,7 @@
 
 #include "actuator_files.h"
 #include "actuators/module_demand.h"
+#include "support/power_law.h"
 
 namespace datomsim::testing {
 namespace {
@@ -15,11 +16,6 @@ namespace {
 using namespace actuators;
 
 constexpr double kRelative = 1e-9;
-
-// log10 of the ratio of a quantity between r = 1 cm and r = 10 cm: its power of r.
-double powerOfR(double at1cm, double at10cm) {
-  return std::log10(at10cm / at1cm);
-}
 
 TEST(ElectrostaticLatch, HoldsTheParallelPlateForce) {
   const auto figures = electrostaticLatchFigures(shippedDesign("electrostatic"));

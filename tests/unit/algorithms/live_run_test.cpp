@@ -13,17 +13,13 @@
 #include "experiment/run.h"
 #include "scene/paper_arch.h"
 #include "scene/reshape.h"
+#include "support/rule_table.h"
 #include "support/world_builder.h"
 
 namespace datomsim::experiment {
 namespace {
 
 using geometry::Cell;
-
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
 
 RunRequest followGradient() {
   RunRequest request;
@@ -53,7 +49,7 @@ world::World floorWithWalkers() {
 
 // The run advanced in steps of `step`, the time never going back and never past a step's bound.
 RunResult inSteps(const world::World& world, const RunRequest& request, Time step) {
-  auto run = LiveRun::start(world, table(), request);
+  auto run = LiveRun::start(world, testing::paperRules(), request);
   EXPECT_TRUE(run.ok()) << run.error();
   if (!run.ok()) return {};
   Time last = 0;
@@ -71,7 +67,7 @@ RunResult inSteps(const world::World& world, const RunRequest& request, Time ste
 }
 
 RunResult atOnce(const world::World& world, const RunRequest& request) {
-  auto result = runProgram(world, table(), request);
+  auto result = runProgram(world, testing::paperRules(), request);
   EXPECT_TRUE(result.ok()) << result.error();
   return result.ok() ? std::move(*result) : RunResult{};
 }
@@ -116,7 +112,7 @@ TEST(LiveRun, AProgramThatRunsOnStopsAtItsUntilInStepsToo) {
 
 TEST(LiveRun, ARunEndedEarlyIsAResultOfWhatItDid) {
   const world::World arch = *scene::paperArch(2);
-  auto run = LiveRun::start(arch, table(), followGradient());
+  auto run = LiveRun::start(arch, testing::paperRules(), followGradient());
   ASSERT_TRUE(run.ok()) << run.error();
   EXPECT_FALSE((*run)->advance(200 * kMillisecond));
   const std::optional<Time> next = (*run)->nextEventTime();
@@ -136,7 +132,7 @@ TEST(LiveRun, ARunEndedEarlyIsAResultOfWhatItDid) {
 TEST(LiveRun, RefusesWhatTheRunRefuses) {
   RunRequest request = followGradient();
   request.goal = Cell{400, 0, 0};
-  const auto run = LiveRun::start(*scene::paperArch(1), table(), request);
+  const auto run = LiveRun::start(*scene::paperArch(1), testing::paperRules(), request);
   ASSERT_FALSE(run.ok());
   EXPECT_NE(run.error().find("goal 400,0,0"), std::string::npos) << run.error();
 }

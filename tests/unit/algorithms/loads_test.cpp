@@ -15,6 +15,7 @@
 #include "mechanics/load_model.h"
 #include "mechanics/load_solver.h"
 #include "scene/random_scene.h"
+#include "support/rule_table.h"
 #include "support/world_builder.h"
 #include "unit/mechanics/mechanics_scenes.h"
 
@@ -26,11 +27,6 @@ namespace {
 // tolerance (a relative residual of 1e-10).
 constexpr double kAgreement = 1e-8;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
 
 // What a module reports: its latches' largest force (N) and moment (N m), their smallest safety.
 struct Worst {
@@ -73,7 +69,7 @@ Distributed distributed(world::World world, const Cell& root,
   request.parameters = std::move(parameters);
   request.parameters["root"] = toString(root);
   request.simulation.messageJitter = jitter;
-  const auto run = experiment::runProgram(std::move(world), table(), request);
+  const auto run = experiment::runProgram(std::move(world), testing::paperRules(), request);
   Distributed out;
   EXPECT_TRUE(run.ok()) << run.error();
   if (!run.ok()) return out;
@@ -252,7 +248,7 @@ TEST(DistributedLoads, RefusesBadParametersNamingThem) {
     request.program = "loads";
     request.parameters = c.parameters;
     request.parameters["root"] = "0,0,0";
-    const auto run = experiment::runProgram(world, table(), request);
+    const auto run = experiment::runProgram(world, testing::paperRules(), request);
     ASSERT_FALSE(run.ok()) << c.says;
     EXPECT_NE(run.error().find(c.says), std::string::npos) << run.error();
   }

@@ -8,14 +8,10 @@
 #include "motion/reach.h"
 #include "scene/paper_arch.h"
 #include "scene/random_scene.h"
+#include "support/rule_table.h"
 #include "support/world_builder.h"
 
 namespace datomsim::algorithms {
-
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
 
 namespace {
 
@@ -25,7 +21,7 @@ using geometry::Cell;
 std::vector<std::pair<Cell, int>> reachDistances(world::World world, const Cell& goal,
                                                  const motion::RuleOptions& options) {
   motion::takeMobile(world, goal);
-  auto map = motion::reach(world, table(), goal, options);
+  auto map = motion::reach(world, testing::paperRules(), goal, options);
   EXPECT_TRUE(map.ok()) << map.error();
   return map->sorted();
 }
@@ -41,7 +37,7 @@ TEST(PaperExperiment, DistributedGradientEqualsReachOnBothArchScenes) {
       request.program = "gradient";
       request.goal = scene::kPaperGoal;
       request.simulation.rules.attachment = attachment;
-      const auto run = experiment::runProgram(paperScene(hole), table(), request);
+      const auto run = experiment::runProgram(paperScene(hole), testing::paperRules(), request);
       ASSERT_TRUE(run.ok()) << run.error();
       ASSERT_FALSE(run->failure) << *run->failure;
       EXPECT_EQ(run->report.cellInts("distances"),
@@ -68,7 +64,7 @@ TEST(PaperExperiment, DistributedGradientEqualsReachOnRandomScenes) {
       request.goal = goal;
       request.simulation.rules.rules = rules;
       request.simulation.seed = seed;
-      const auto run = experiment::runProgram(*world, table(), request);
+      const auto run = experiment::runProgram(*world, testing::paperRules(), request);
       ASSERT_TRUE(run.ok()) << run.error();
       ASSERT_FALSE(run->failure) << *run->failure;
       // The new mobile stands at the goal in the distributed run; reach imagines it there.
@@ -91,7 +87,7 @@ FollowRun followOnPaperScene(int hole, uint64_t seed = 1) {
   request.start = scene::kPaperStart;
   request.simulation.seed = seed;
   request.trace = true;
-  auto run = experiment::runProgram(paperScene(hole), table(), request);
+  auto run = experiment::runProgram(paperScene(hole), testing::paperRules(), request);
   EXPECT_TRUE(run.ok()) << run.error();
   if (run.ok()) {
     EXPECT_FALSE(run->failure) << *run->failure;
@@ -127,8 +123,9 @@ TEST(PaperExperiment, FollowGradientTakesTheSamePathAsTheCentralisedWalk) {
     const FollowRun run = followOnPaperScene(hole);
     world::World fixed = paperScene(hole);
     motion::takeMobile(fixed, scene::kPaperGoal);
-    const auto map = motion::reach(fixed, table(), scene::kPaperGoal, {});
-    const auto walk = motion::followGradient(fixed, table(), *map, scene::kPaperStart);
+    const auto map = motion::reach(fixed, testing::paperRules(), scene::kPaperGoal, {});
+    const auto walk =
+        motion::followGradient(fixed, testing::paperRules(), *map, scene::kPaperStart);
     ASSERT_TRUE(walk.ok());
     std::vector<Cell> expected = {scene::kPaperStart};
     for (const motion::Motion& m : *walk) expected.push_back(m.goal);
@@ -168,7 +165,7 @@ TEST(PaperExperiment, FollowGradientArrivesOrSaysWhyOnRandomScenes) {
     request.goal = goal;
     request.start = start;
     request.simulation.seed = seed;
-    const auto run = experiment::runProgram(*world, table(), request);
+    const auto run = experiment::runProgram(*world, testing::paperRules(), request);
     ASSERT_TRUE(run.ok()) << run.error();
     if (run->failure) {
       EXPECT_NE(run->failure->find("did not reach the goal " + toString(goal) + ": at "),
@@ -213,7 +210,7 @@ TEST(FollowGradientFailures, AMobileLatchedToNothingSaysSo) {
   request.program = "follow-gradient";
   request.goal = scene::kPaperGoal;
   request.start = Cell{0, 0, 6};  // above the scene, touching no module
-  const auto run = experiment::runProgram(paperScene(2), table(), request);
+  const auto run = experiment::runProgram(paperScene(2), testing::paperRules(), request);
   ASSERT_TRUE(run.ok()) << run.error();
   ASSERT_TRUE(run->failure.has_value());
   EXPECT_NE(run->failure->find("at 0,0,6 it is latched to no module"), std::string::npos)
@@ -230,7 +227,7 @@ TEST(FollowGradientFailures, AGoalOnAnotherIslandIsNotReachable) {
   request.program = "follow-gradient";
   request.goal = Cell{8, 8, 1};
   request.start = Cell{0, 0, 1};
-  const auto run = experiment::runProgram(std::move(world), table(), request);
+  const auto run = experiment::runProgram(std::move(world), testing::paperRules(), request);
   ASSERT_TRUE(run.ok()) << run.error();
   ASSERT_TRUE(run->failure.has_value());
   EXPECT_NE(run->failure->find("the goal is not reachable from there"), std::string::npos)
@@ -257,7 +254,7 @@ TEST(FollowGradientFailures, AnAnswerCutOffByTheHelpersOwnPistonIsNamedAsOne) {
   request.program = "follow-gradient";
   request.goal = Cell{0, 0, 1};
   request.start = Cell{1, 1, 2};
-  const auto run = experiment::runProgram(std::move(world), table(), request);
+  const auto run = experiment::runProgram(std::move(world), testing::paperRules(), request);
   ASSERT_TRUE(run.ok()) << run.error();
   ASSERT_TRUE(run->failure.has_value());
   EXPECT_NE(run->failure->find("at 1,1,2 it waits for 2 AckDeform, from the helpers at 1,1,1 "
@@ -285,7 +282,7 @@ TEST(FollowGradientFailures, AnAnswerThatMustGoRoundTheHelpersPistonArrives) {
   request.goal = Cell{5, 5, 1};
   request.start = Cell{-1, 6, 3};
   request.simulation.seed = 8;
-  const auto run = experiment::runProgram(std::move(*world), table(), request);
+  const auto run = experiment::runProgram(std::move(*world), testing::paperRules(), request);
   ASSERT_TRUE(run.ok()) << run.error();
   EXPECT_FALSE(run->failure) << *run->failure;
   EXPECT_EQ(run->report.flag("arrived"), true);
@@ -299,7 +296,7 @@ namespace datomsim::experiment {
 namespace {
 
 TEST(PaperObservations, ThePathGoesUnderTheTwoHighArchAndOverTheOneHighOne) {
-  const auto experiment = runPaperExperiment(algorithms::table());
+  const auto experiment = runPaperExperiment(testing::paperRules());
   ASSERT_TRUE(experiment.ok()) << experiment.error();
   ASSERT_EQ(experiment->scenes.size(), 2u);
   const PaperScene& high = experiment->scenes[0];
@@ -316,7 +313,7 @@ TEST(PaperObservations, ThePathGoesUnderTheTwoHighArchAndOverTheOneHighOne) {
 }
 
 TEST(PaperObservations, CellsOnTheFarSideGetLargerDistancesWhenTheHoleIsOneHigh) {
-  const auto experiment = runPaperExperiment(algorithms::table());
+  const auto experiment = runPaperExperiment(testing::paperRules());
   ASSERT_TRUE(experiment.ok()) << experiment.error();
   EXPECT_TRUE(experiment->farSideFartherWithLowHole);
   // The start itself is one such cell.

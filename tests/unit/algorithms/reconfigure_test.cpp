@@ -13,17 +13,13 @@
 
 #include "experiment/run.h"
 #include "scene/reshape.h"
+#include "support/rule_table.h"
 #include "support/world_builder.h"
 
 namespace datomsim::algorithms {
 namespace {
 
 using geometry::Cell;
-
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
 
 experiment::RunRequest reconfigure(const std::vector<Cell>& target, uint64_t seed = 1) {
   experiment::RunRequest request;
@@ -48,7 +44,8 @@ void expectBuilt(const experiment::RunResult& run, std::vector<Cell> target) {
 
 TEST(Reconfigure, ALineBecomesABlock) {
   scene::ReshapeCase reshape = *scene::lineToBlock(8);
-  const auto run = experiment::runProgram(reshape.world, table(), reconfigure(reshape.target));
+  const auto run =
+      experiment::runProgram(reshape.world, testing::paperRules(), reconfigure(reshape.target));
   ASSERT_TRUE(run.ok()) << run.error();
   ASSERT_FALSE(run->failure) << *run->failure;
   expectBuilt(*run, reshape.target);
@@ -60,13 +57,13 @@ TEST(Reconfigure, ThePapersArchIsBuiltFromALayerOnItsBoxManyModulesAtOnce) {
     scene::ReshapeCase reshape = *scene::archFromLayer(hole);
     auto request = reconfigure(reshape.target);
     request.trace = true;
-    const auto run = experiment::runProgram(reshape.world, table(), request);
+    const auto run = experiment::runProgram(reshape.world, testing::paperRules(), request);
     ASSERT_TRUE(run.ok()) << run.error();
     ASSERT_FALSE(run->failure) << *run->failure;
     expectBuilt(*run, reshape.target);
     EXPECT_GE(run->statistics.maxConcurrentMotions, 4) << "hole " << hole;
     // The same seed, the same run.
-    const auto again = experiment::runProgram(reshape.world, table(), request);
+    const auto again = experiment::runProgram(reshape.world, testing::paperRules(), request);
     EXPECT_EQ(again->trace, run->trace);
   }
 }
@@ -74,9 +71,9 @@ TEST(Reconfigure, ThePapersArchIsBuiltFromALayerOnItsBoxManyModulesAtOnce) {
 TEST(Reconfigure, OneMotionAtATimeIsSlower) {
   scene::ReshapeCase reshape = *scene::archFromLayer(2);
   auto request = reconfigure(reshape.target);
-  const auto parallel = experiment::runProgram(reshape.world, table(), request);
+  const auto parallel = experiment::runProgram(reshape.world, testing::paperRules(), request);
   request.simulation.maxMotions = 1;
-  const auto sequential = experiment::runProgram(reshape.world, table(), request);
+  const auto sequential = experiment::runProgram(reshape.world, testing::paperRules(), request);
   ASSERT_TRUE(parallel.ok() && sequential.ok());
   expectBuilt(*sequential, reshape.target);
   EXPECT_EQ(sequential->statistics.maxConcurrentMotions, 1);
@@ -95,7 +92,7 @@ TEST(Reconfigure, ATargetCellNoModuleCanReachStopsTheRunWithTheCell) {
   target.push_back({2, 2, 3});
   auto request = reconfigure(target);
   request.reshape.stall = 60 * kSecond;
-  const auto run = experiment::runProgram(std::move(world), table(), request);
+  const auto run = experiment::runProgram(std::move(world), testing::paperRules(), request);
   ASSERT_TRUE(run.ok()) << run.error();
   ASSERT_TRUE(run->reshape.has_value());
   EXPECT_FALSE(run->reshape->success);
@@ -110,13 +107,13 @@ TEST(Reconfigure, ATargetCellNoModuleCanReachStopsTheRunWithTheCell) {
 TEST(Reconfigure, RefusesATargetOfAnotherSizeOrNone) {
   scene::ReshapeCase reshape = *scene::lineToBlock(8);
   auto request = reconfigure({reshape.target.begin(), reshape.target.end() - 1});
-  const auto smaller = experiment::runProgram(reshape.world, table(), request);
+  const auto smaller = experiment::runProgram(reshape.world, testing::paperRules(), request);
   ASSERT_FALSE(smaller.ok());
   EXPECT_NE(smaller.error().find("the target has 103 cells but the scene 104 modules"),
             std::string::npos)
       << smaller.error();
   request.targets.clear();
-  const auto none = experiment::runProgram(reshape.world, table(), request);
+  const auto none = experiment::runProgram(reshape.world, testing::paperRules(), request);
   ASSERT_FALSE(none.ok());
   EXPECT_NE(none.error().find("needs a target"), std::string::npos) << none.error();
 }
@@ -129,7 +126,7 @@ TEST(Reconfigure, AMotionRefusedForACellAnotherHoldsIsTriedAgainWhenThatMotionEn
   scene::ReshapeCase reshape = *scene::archFromLayer(2);
   auto request = reconfigure(reshape.target);
   request.trace = true;
-  const auto run = experiment::runProgram(reshape.world, table(), request);
+  const auto run = experiment::runProgram(reshape.world, testing::paperRules(), request);
   ASSERT_TRUE(run.ok()) << run.error();
   expectBuilt(*run, reshape.target);
 
@@ -190,7 +187,7 @@ TEST(Reconfigure, AFillThatWouldWallAMoverInWaitsForItToLeave) {
   for (uint64_t seed = 1; seed <= 12; ++seed) {
     auto request = reconfigure(target, seed);
     request.reshape.stall = 120 * kSecond;
-    const auto run = experiment::runProgram(world, table(), request);
+    const auto run = experiment::runProgram(world, testing::paperRules(), request);
     ASSERT_TRUE(run.ok()) << run.error();
     ASSERT_FALSE(run->failure) << *run->failure;
     SCOPED_TRACE("seed " + std::to_string(seed));
@@ -208,7 +205,7 @@ TEST(Reconfigure, MoversNeverStepIntoAPit) {
   request.simulation.connectivity = false;  // as `datomsim run` does by default
   request.simulation.rules.connectivity = false;
   request.trace = true;
-  const auto run = experiment::runProgram(reshape.world, table(), request);
+  const auto run = experiment::runProgram(reshape.world, testing::paperRules(), request);
   ASSERT_TRUE(run.ok()) << run.error();
   ASSERT_FALSE(run->failure) << *run->failure;
   expectBuilt(*run, reshape.target);
@@ -262,7 +259,7 @@ TEST(Reconfigure, MoversNeverStepIntoAPit) {
 TEST(Reconfigure, ATargetNoMotionCanEnterIsRefusedBeforeTheRun) {
   testing::WorldBuilder builder(world::Bounds{Cell{6, 3, 1}});
   builder.modules({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}});
-  const auto run = experiment::runProgram(builder.build(), table(),
+  const auto run = experiment::runProgram(builder.build(), testing::paperRules(),
                                           reconfigure({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}));
   ASSERT_FALSE(run.ok());
   EXPECT_EQ(run.error(),
@@ -275,10 +272,10 @@ TEST(Reconfigure, ATargetNoMotionCanEnterIsRefusedBeforeTheRun) {
 TEST(Reconfigure, ClaimsOnOpenCellsSaveMotions) {
   scene::ReshapeCase reshape = *scene::randomReshape(12, 12, 40, /*seed=*/1);
   auto request = reconfigure(reshape.target);
-  const auto racing = experiment::runProgram(reshape.world, table(), request);
+  const auto racing = experiment::runProgram(reshape.world, testing::paperRules(), request);
   request.parameters["claims"] = "1";
   request.trace = true;
-  const auto claiming = experiment::runProgram(reshape.world, table(), request);
+  const auto claiming = experiment::runProgram(reshape.world, testing::paperRules(), request);
   ASSERT_TRUE(racing.ok() && claiming.ok());
   ASSERT_FALSE(claiming->failure) << *claiming->failure;
   expectBuilt(*racing, reshape.target);
@@ -288,7 +285,7 @@ TEST(Reconfigure, ClaimsOnOpenCellsSaveMotions) {
   EXPECT_LT(claiming->statistics.motions * 5, racing->statistics.motions * 4)
       << claiming->statistics.motions << " motions with claims, " << racing->statistics.motions
       << " without";
-  const auto again = experiment::runProgram(reshape.world, table(), request);
+  const auto again = experiment::runProgram(reshape.world, testing::paperRules(), request);
   ASSERT_TRUE(again.ok());
   EXPECT_EQ(again->trace, claiming->trace);
 }
@@ -297,12 +294,12 @@ TEST(Reconfigure, ABadClaimsValueIsRefusedNamingIt) {
   scene::ReshapeCase reshape = *scene::lineToBlock(8);
   auto request = reconfigure(reshape.target);
   request.parameters["claims"] = "13";
-  const auto tooMany = experiment::runProgram(reshape.world, table(), request);
+  const auto tooMany = experiment::runProgram(reshape.world, testing::paperRules(), request);
   ASSERT_FALSE(tooMany.ok());
   EXPECT_EQ(tooMany.error(),
             "parameter claims of program reconfigure: \"13\" is out of its range, 0 to 12");
   request.parameters = {{"claim", "1"}};
-  const auto unknown = experiment::runProgram(reshape.world, table(), request);
+  const auto unknown = experiment::runProgram(reshape.world, testing::paperRules(), request);
   ASSERT_FALSE(unknown.ok());
   EXPECT_EQ(unknown.error(),
             "program reconfigure has no parameter \"claim\" (its parameters: claims)");

@@ -10,14 +10,10 @@
 #include "geometry/lattice.h"
 #include "scene/box.h"
 #include "scene/random_scene.h"
+#include "support/rule_table.h"
 
 namespace datomsim {
 namespace {
-
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
 
 // Hop counts by breadth-first search from the root over latched neighbours.
 std::map<Cell, int> breadthFirst(const world::World& world, const Cell& root) {
@@ -42,7 +38,7 @@ std::map<Cell, int> flood(world::World world, const Cell& root, Time jitter) {
   request.program = "flood";
   request.parameters = {{"root", toString(root)}};
   request.simulation.messageJitter = jitter;
-  const auto run = experiment::runProgram(std::move(world), table(), request);
+  const auto run = experiment::runProgram(std::move(world), testing::paperRules(), request);
   EXPECT_TRUE(run.ok()) << run.error();
   if (run.ok()) {
     EXPECT_FALSE(run->failure) << *run->failure;

@@ -10,15 +10,11 @@
 #include "datomsim/program.h"
 #include "experiment/run.h"
 #include "motion/motion.h"
+#include "support/rule_table.h"
 #include "support/world_builder.h"
 
 namespace datomsim {
 namespace {
-
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
 
 // What the modules of the test program saw, for the test to read after the run.
 struct Seen {
@@ -94,7 +90,7 @@ world::World floorWith(const Cell& a, const Cell& b) {
 // A goal both movers reach about different pivots without helpers.
 std::optional<Cell> sharedGoal(const world::World& world, const Cell& a, const Cell& b) {
   const auto free = [&](const Cell& cell) {
-    return motion::validMotions(world, table(), {cell, world.moduleAt(cell)->id}, {});
+    return motion::validMotions(world, testing::paperRules(), {cell, world.moduleAt(cell)->id}, {});
   };
   for (const motion::Motion& ma : free(a)) {
     for (const motion::Motion& mb : free(b)) {
@@ -124,7 +120,7 @@ TEST(ProgramApi, AQueuedMotionRefusedWhenItsTurnComesReachesOnMotionEnded) {
       {"first", toString(first)}, {"second", toString(second)}, {"goal", toString(*goal)}};
   request.simulation.maxMotions = 1;
   request.trace = true;
-  const auto run = experiment::runProgram(std::move(world), table(), request);
+  const auto run = experiment::runProgram(std::move(world), testing::paperRules(), request);
   ASSERT_TRUE(run.ok()) << run.error();
   ASSERT_FALSE(run->failure) << *run->failure;
 
@@ -172,7 +168,8 @@ TEST(ProgramApi, ABadParameterStopsTheRunBeforeItStartsNamingTheKey) {
   request.added = added;
   request.parameters = {
       {"first", "1,2,1"}, {"second", "3,2,1"}, {"goal", "2,2,1"}, {"delay_ms", "-5"}};
-  const auto run = experiment::runProgram(floorWith({1, 2, 1}, {3, 2, 1}), table(), request);
+  const auto run =
+      experiment::runProgram(floorWith({1, 2, 1}, {3, 2, 1}), testing::paperRules(), request);
   ASSERT_FALSE(run.ok());
   EXPECT_EQ(run.error(),
             "parameter delay_ms of program duel: \"-5\" is out of its range, 0 to 10000");
@@ -180,7 +177,8 @@ TEST(ProgramApi, ABadParameterStopsTheRunBeforeItStartsNamingTheKey) {
 
   request.parameters["delay_ms"] = "5";
   request.parameters["second"] = "5,5,1";
-  const auto empty = experiment::runProgram(floorWith({1, 2, 1}, {3, 2, 1}), table(), request);
+  const auto empty =
+      experiment::runProgram(floorWith({1, 2, 1}, {3, 2, 1}), testing::paperRules(), request);
   ASSERT_FALSE(empty.ok());
   EXPECT_EQ(empty.error(), "parameter second of program duel: cell 5,5,1 holds no module");
 }
@@ -199,7 +197,8 @@ TEST(ProgramApi, AReportMayNotTakeAKeyOfTheRunsOutput) {
   experiment::RunRequest request;
   request.program = "reporter";
   request.added = added;
-  const auto run = experiment::runProgram(floorWith({1, 2, 1}, {3, 2, 1}), table(), request);
+  const auto run =
+      experiment::runProgram(floorWith({1, 2, 1}, {3, 2, 1}), testing::paperRules(), request);
   ASSERT_FALSE(run.ok());
   EXPECT_EQ(run.error(),
             "program reporter reports \"motions\", a key the run's output uses itself; report it "

@@ -28,10 +28,6 @@ std::map<Triple, int> distancesOf(const nlohmann::json& reach) {
   return out;
 }
 
-void writeText(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
-
 TEST_F(CommandLine, SceneFilesSayWhatTheirModulesAre) {
   const std::string xml = path("box.xml"), json = path("box.json"), back = path("back.xml");
   ASSERT_EQ(datomsim("generate box --size 3,3,2 --module catom3d -o " + xml).status, 0);
@@ -56,16 +52,16 @@ TEST_F(CommandLine, SceneFilesSayWhatTheirModulesAre) {
 
 TEST_F(CommandLine, AnUnknownModuleKindInAFileIsNamed) {
   const std::string json = path("bad.json"), xml = path("bad.xml");
-  writeText(json, R"({"format": "datomsim-scene", "version": 1, "module": "catom",
+  testing::writeText(json, R"({"format": "datomsim-scene", "version": 1, "module": "catom",
     "modules": [{"cell": [0,0,0]}]})");
   const Outcome fromJson = datomsim("info " + json);
   EXPECT_EQ(fromJson.status, 1);
   EXPECT_NE(fromJson.output.find("module"), std::string::npos) << fromJson.output;
   EXPECT_NE(fromJson.output.find("\"catom\""), std::string::npos) << fromJson.output;
-  writeText(xml,
-            "<?xml version=\"1.0\"?>\n<world gridSize=\"3,3,3\">\n"
-            "  <blockList moduleKind=\"sphere\">\n    <block position=\"0,0,0\"/>\n"
-            "  </blockList>\n</world>\n");
+  testing::writeText(xml,
+                     "<?xml version=\"1.0\"?>\n<world gridSize=\"3,3,3\">\n"
+                     "  <blockList moduleKind=\"sphere\">\n    <block position=\"0,0,0\"/>\n"
+                     "  </blockList>\n</world>\n");
   const Outcome fromXml = datomsim("info " + xml);
   EXPECT_EQ(fromXml.status, 1);
   EXPECT_NE(fromXml.output.find("moduleKind"), std::string::npos) << fromXml.output;

@@ -20,25 +20,22 @@ namespace {
 namespace fs = std::filesystem;
 using testing::readText;
 
-void writeText(const std::string& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
 class Outputs : public CommandLine {
  protected:
   // Two modules a million cells apart: a picture of them is millions of pixels wide.
   std::string farApart() {
     const std::string file = path("far.json");
-    writeText(file, R"({"format":"datomsim-scene","version":1,"name":"far","grid":null,)"
-                    R"("blockSize":[10,10,10],"modules":[)"
-                    R"({"id":1,"cell":[0,0,0],"orientation":0,"color":[128,128,128]},)"
-                    R"({"id":2,"cell":[1000000,0,0],"orientation":0,"color":[128,128,128]}]})");
+    testing::writeText(file,
+                       R"({"format":"datomsim-scene","version":1,"name":"far","grid":null,)"
+                       R"("blockSize":[10,10,10],"modules":[)"
+                       R"({"id":1,"cell":[0,0,0],"orientation":0,"color":[128,128,128]},)"
+                       R"({"id":2,"cell":[1000000,0,0],"orientation":0,"color":[128,128,128]}]})");
     return file;
   }
   std::string reachOptions() { return " --goal 6,5,2 --start 0,0,2"; }
   // A viewer script of its own: the build may have none.
   std::string viewerScript() {
-    writeText(path("viewer.js"), "// a viewer\n");
+    testing::writeText(path("viewer.js"), "// a viewer\n");
     return " --viewer-js " + path("viewer.js");
   }
 };
@@ -75,7 +72,7 @@ TEST_F(Outputs, ViewRefusesToWriteItsPageOverTheReachMapItShows) {
 
 TEST_F(Outputs, ViewRefusesToWriteItsPageOverTheViewerScriptItInlines) {
   const std::string script = path("v.js");
-  writeText(script, "// a viewer\n");
+  testing::writeText(script, "// a viewer\n");
   const Outcome outcome = datomsim("view " + arch(1) + " -o " + script + " --viewer-js " + script);
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_NE(outcome.output.find("would overwrite the --viewer-js it reads"), std::string::npos)
@@ -134,7 +131,7 @@ TEST_F(Outputs, AnOutputOnAFifoIsWrittenIntoWhenSomeoneReads) {
 TEST_F(Outputs, AnOutputNamingTheFileStandardOutputGoesToIsWrittenAsStandardOutput) {
   // Appended, as the shell opened it: not replaced by a new file of the JSON alone.
   const std::string log = path("log.txt");
-  writeText(log, "old\n");
+  testing::writeText(log, "old\n");
   const Outcome outcome = shell(std::string(DATOMSIM_BINARY) + " reach " + arch(1) +
                                 reachOptions() + " --out /dev/stdout >> " + log);
   EXPECT_EQ(outcome.status, 0) << outcome.output;
@@ -164,7 +161,7 @@ TEST_F(Outputs, RunWhoseOutIsADirectoryFailsBeforeRunningAndWritesNoTrace) {
 
 TEST_F(Outputs, ReachWhoseSvgIsADirectoryLeavesItsPngAsItWas) {
   fs::create_directories(path("d.svg"));
-  writeText(path("o.png"), "old");
+  testing::writeText(path("o.png"), "old");
   const Outcome outcome = datomsim("reach " + arch(1) + reachOptions() + " --png " + path("o.png") +
                                    " --svg " + path("d.svg"));
   EXPECT_EQ(outcome.status, 1) << outcome.output;
@@ -174,7 +171,7 @@ TEST_F(Outputs, ReachWhoseSvgIsADirectoryLeavesItsPngAsItWas) {
 TEST_F(Outputs, CompareWhoseSummaryIsADirectoryChangesNothing) {
   const std::string dir = path("cmp");
   fs::create_directories(dir + "/compare.json");
-  writeText(dir + "/compare.png", "old");
+  testing::writeText(dir + "/compare.png", "old");
   const Outcome outcome = datomsim("compare " + arch(1) + reachOptions() + " -o " + dir);
   EXPECT_EQ(outcome.status, 1) << outcome.output;
   EXPECT_EQ(readText(dir + "/compare.png"), "old");

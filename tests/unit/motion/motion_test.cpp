@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "geometry/lattice.h"
+#include "support/rule_table.h"
 #include "support/world_builder.h"
 
 namespace datomsim::motion {
@@ -14,13 +15,8 @@ using testing::WorldBuilder;
 // Rules are exercised in mid-air, far from the ground, so that only the cells we place matter.
 constexpr Cell kPivot{5, 5, 5};
 
-const RuleTable& table() {
-  static const RuleTable kTable;
-  return kTable;
-}
-
 const Rule& ruleWith(Turn turn, int direction = 0, int slot = 0) {
-  return table().rule(direction * 6 + slot * 3 + static_cast<int>(turn));
+  return testing::paperRules().rule(direction * 6 + slot * 3 + static_cast<int>(turn));
 }
 
 Cell cellOf(const Rule& rule, CellRole role) {
@@ -79,7 +75,8 @@ TEST(Motion, RefusesACellBelowTheGround) {
   // Mobile beside a pivot on the ground: some rule cells lie at z = -1.
   const world::World world = WorldBuilder().module({0, 0, 0}).build();
   int solid = 0;
-  for (const Evaluation& e : evaluateAll(world, table(), {{1, 0, 0}, std::nullopt}, {})) {
+  for (const Evaluation& e :
+       evaluateAll(world, testing::paperRules(), {{1, 0, 0}, std::nullopt}, {})) {
     if (const auto* refusal = std::get_if<Refusal>(&e)) {
       if (refusal->reason == RefusalReason::kCellOutsideWorld ||
           refusal->reason == RefusalReason::kGoalOutsideWorld) {
@@ -124,10 +121,10 @@ TEST(Motion, AttachmentRefusesAModuleHeldOnlyThroughConnectorsItsPistonMoves) {
 // 2,5,0 (piston 4), 1,4,2 and 1,5,2 (piston 5). Or its refusal.
 Evaluation aheadAbout241(const world::World& world, const RuleOptions& options) {
   const Mobile mobile{Cell{1, 4, 1}, std::nullopt};
-  for (Evaluation& evaluation : evaluateAll(world, table(), mobile, options)) {
-    const Rule* rule = &table().rule(std::holds_alternative<Motion>(evaluation)
-                                         ? std::get<Motion>(evaluation).rule
-                                         : std::get<Refusal>(evaluation).rule);
+  for (Evaluation& evaluation : evaluateAll(world, testing::paperRules(), mobile, options)) {
+    const Rule* rule = &testing::paperRules().rule(std::holds_alternative<Motion>(evaluation)
+                                                       ? std::get<Motion>(evaluation).rule
+                                                       : std::get<Refusal>(evaluation).rule);
     const Cell pivot = mobile.cell - rule->mobileOffset;
     if (pivot == Cell{2, 4, 1} && pivot + rule->goalOffset == Cell{2, 5, 1}) return evaluation;
   }
@@ -223,7 +220,8 @@ TEST(Motion, EvaluatesSixRulesPerNeighbouringPivot) {
   for (int d = 0; d < geometry::kDirectionCount; ++d) {
     if (world.moduleAt(mobile + geometry::neighbourOffset(d))) ++pivots;
   }
-  EXPECT_EQ(evaluateAll(world, table(), {mobile, std::nullopt}, {}).size(), size_t(6 * pivots));
+  EXPECT_EQ(evaluateAll(world, testing::paperRules(), {mobile, std::nullopt}, {}).size(),
+            size_t(6 * pivots));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "motion/bidirectionality.h"
 #include "scene/random_scene.h"
+#include "support/rule_table.h"
 #include "support/world_builder.h"
 
 namespace datomsim::motion {
@@ -12,14 +13,9 @@ namespace {
 using geometry::Cell;
 using testing::WorldBuilder;
 
-const RuleTable& table() {
-  static const RuleTable kTable;
-  return kTable;
-}
-
 TEST(Reach, GoalHasDistanceZeroAndNeighboursOne) {
   const world::World world = WorldBuilder().box({0, 0, 0}, {6, 6, 2}).build();
-  const auto map = reach(world, table(), {2, 2, 2}, {});
+  const auto map = reach(world, testing::paperRules(), {2, 2, 2}, {});
   ASSERT_TRUE(map.ok()) << map.error();
   EXPECT_EQ(map->distanceAt({2, 2, 2}), 0);
   EXPECT_GT(map->size(), 1u);
@@ -27,7 +23,7 @@ TEST(Reach, GoalHasDistanceZeroAndNeighboursOne) {
   for (const auto& [cell, distance] : map->sorted()) {
     if (distance == 0) continue;
     bool closer = false;
-    for (const Motion& m : validMotions(world, table(), {cell, std::nullopt}, {})) {
+    for (const Motion& m : validMotions(world, testing::paperRules(), {cell, std::nullopt}, {})) {
       if (map->distanceAt(m.goal) == distance - 1) closer = true;
     }
     EXPECT_TRUE(closer) << geometry::toString(cell) << " at " << distance;
@@ -36,25 +32,25 @@ TEST(Reach, GoalHasDistanceZeroAndNeighboursOne) {
 
 TEST(Reach, SortedDistancesAreOrderedByXThenYThenZ) {
   const world::World world = WorldBuilder().box({0, 0, 0}, {4, 4, 2}).build();
-  const auto sorted = reach(world, table(), {1, 1, 2}, {})->sorted();
+  const auto sorted = reach(world, testing::paperRules(), {1, 1, 2}, {})->sorted();
   for (size_t i = 1; i < sorted.size(); ++i) EXPECT_LT(sorted[i - 1].first, sorted[i].first);
 }
 
 TEST(Reach, RefusesAnOccupiedOrSolidGoal) {
   const world::World world = WorldBuilder().box({0, 0, 0}, {3, 3, 1}).build();
-  const auto occupied = reach(world, table(), {1, 1, 0}, {});
+  const auto occupied = reach(world, testing::paperRules(), {1, 1, 0}, {});
   ASSERT_FALSE(occupied.ok());
   EXPECT_NE(occupied.error().find("holds module"), std::string::npos);
-  EXPECT_FALSE(reach(world, table(), {1, 1, -1}, {}).ok());
+  EXPECT_FALSE(reach(world, testing::paperRules(), {1, 1, -1}, {}).ok());
 }
 
 TEST(Reach, FollowingTheGradientLowersTheDistanceByOneEachMotion) {
   const world::World world = WorldBuilder().box({0, 0, 0}, {7, 7, 2}).build();
-  const auto map = reach(world, table(), {5, 4, 2}, {});
+  const auto map = reach(world, testing::paperRules(), {5, 4, 2}, {});
   ASSERT_TRUE(map.ok());
   const Cell start{0, 0, 2};
   ASSERT_TRUE(map->distanceAt(start).has_value());
-  const auto path = followGradient(world, table(), *map, start);
+  const auto path = followGradient(world, testing::paperRules(), *map, start);
   ASSERT_TRUE(path.ok()) << path.error();
   ASSERT_EQ(static_cast<int>(path->size()), *map->distanceAt(start));
   Cell at = start;
@@ -68,8 +64,8 @@ TEST(Reach, FollowingTheGradientLowersTheDistanceByOneEachMotion) {
 
 TEST(Reach, FollowGradientRefusesAnUnreachableStart) {
   const world::World world = WorldBuilder().box({0, 0, 0}, {3, 3, 1}).build();
-  const auto map = reach(world, table(), {1, 1, 1}, {});
-  const auto path = followGradient(world, table(), *map, {50, 50, 50});
+  const auto map = reach(world, testing::paperRules(), {1, 1, 1}, {});
+  const auto path = followGradient(world, testing::paperRules(), *map, {50, 50, 50});
   ASSERT_FALSE(path.ok());
   EXPECT_NE(path.error().find("cannot reach"), std::string::npos);
 }
@@ -86,7 +82,7 @@ TEST(Bidirectionality, HoldsOnABoxForEveryOptionSet) {
   const world::World world = WorldBuilder().box({0, 0, 0}, {4, 4, 2}).module({1, 1, 2}).build();
   for (const RuleSet rules : {RuleSet::kPaper, RuleSet::kStrict}) {
     for (const bool attachment : {true, false}) {
-      const auto report = checkBidirectionality(world, table(), {rules, attachment});
+      const auto report = checkBidirectionality(world, testing::paperRules(), {rules, attachment});
       EXPECT_GT(report.motionsChecked, 0u);
       EXPECT_TRUE(report.counterexamples.empty());
     }
@@ -104,7 +100,8 @@ TEST(Bidirectionality, HoldsOnRandomScenesForEveryOptionSet) {
     ASSERT_TRUE(world.ok()) << world.error();
     for (const RuleSet rules : {RuleSet::kPaper, RuleSet::kStrict}) {
       for (const bool attachment : {true, false}) {
-        const auto report = checkBidirectionality(*world, table(), {rules, attachment});
+        const auto report =
+            checkBidirectionality(*world, testing::paperRules(), {rules, attachment});
         EXPECT_GT(report.motionsChecked, 0u) << "seed " << seed;
         EXPECT_TRUE(report.counterexamples.empty())
             << "seed " << seed << ": " << geometry::toString(report.counterexamples[0].forward.from)

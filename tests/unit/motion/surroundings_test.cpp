@@ -11,17 +11,13 @@
 #include "geometry/lattice.h"
 #include "motion/motion.h"
 #include "scene/random_scene.h"
+#include "support/rule_table.h"
 #include "support/world_builder.h"
 
 namespace datomsim::motion {
 namespace {
 
 using geometry::Cell;
-
-const RuleTable& table() {
-  static const RuleTable kTable;
-  return kTable;
-}
 
 std::vector<RuleOptions> everyOption() {
   std::vector<RuleOptions> options;
@@ -61,19 +57,19 @@ void expectSameAnswers(const world::World& world, uint64_t seed, Tally& tally) {
     for (int direction = 0; direction < geometry::kDirectionCount; ++direction) {
       const Cell mobileCell = pivot.cell + geometry::neighbourOffset(direction);
       if (!world.isInside(mobileCell)) continue;
-      const Rule* rules = table().rulesForMobileDirection(direction);
+      const Rule* rules = testing::paperRules().rulesForMobileDirection(direction);
       uint64_t cells = 0;
       for (int i = 0; i < RuleTable::kRulesPerNeighbour; ++i) cells |= rules[i].masks.cells;
       for (const Mobile& mobile : mobilesAt(world, mobileCell, random)) {
         if (!fixedModuleAt(world, pivot.cell, mobile)) continue;
-        Surroundings around = surroundingsOf(world, table(), pivot.cell, mobile);
+        Surroundings around = surroundingsOf(world, testing::paperRules(), pivot.cell, mobile);
         // In two looks, as a pivot does: the cells kept empty first, then the rest.
         uint64_t keptEmpty = 0;
         for (int i = 0; i < RuleTable::kRulesPerNeighbour; ++i) {
           keptEmpty |= rules[i].masks.mustBeEmpty;
         }
-        lookAt(world, table(), around, keptEmpty);
-        lookAt(world, table(), around, cells);
+        lookAt(world, testing::paperRules(), around, keptEmpty);
+        lookAt(world, testing::paperRules(), around, cells);
         for (const RuleOptions& option : options) {
           for (int i = 0; i < RuleTable::kRulesPerNeighbour; ++i) {
             const bool expected = holds(world, rules[i], mobile, option);
@@ -126,10 +122,10 @@ TEST(Surroundings, RulesJudgedInsideABoxWithHolesAnswerAsCellByCell) {
 
 TEST(Surroundings, MasksCoverEveryCellOfEveryRule) {
   // 42 cells around a pivot, each rule's cells among them, its goal among those to keep empty.
-  EXPECT_EQ(table().neighbourhood().size(), 42u);
-  for (const Rule& rule : table().rules()) {
+  EXPECT_EQ(testing::paperRules().neighbourhood().size(), 42u);
+  for (const Rule& rule : testing::paperRules().rules()) {
     EXPECT_EQ(std::popcount(rule.masks.cells), rule.cellCount);
-    const int goal = table().bitOf(rule.goalOffset);
+    const int goal = testing::paperRules().bitOf(rule.goalOffset);
     ASSERT_GE(goal, 0);
     EXPECT_TRUE(rule.masks.mustBeEmpty & (uint64_t{1} << goal));
     EXPECT_EQ(rule.masks.mustBeEmpty | rule.masks.deforming, rule.masks.cells);

@@ -8,6 +8,7 @@
 
 #include "geometry/lattice.h"
 #include "sim/simulator.h"
+#include "support/rule_table.h"
 #include "support/scripted_program.h"
 #include "support/world_builder.h"
 
@@ -17,11 +18,6 @@ namespace {
 using geometry::Cell;
 using testing::Script;
 using testing::WorldBuilder;
-
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
 
 std::vector<nlohmann::json> lines(const std::string& text) {
   std::vector<nlohmann::json> out;
@@ -33,7 +29,7 @@ std::vector<nlohmann::json> lines(const std::string& text) {
 // A mobile goes ahead around a pivot in mid-air: the trace, subscribed like any recorder, has
 // every change the viewer replays, with the hinge worked out from the module's model.
 TEST(TraceWriter, RecordsAMotionAsTheSimulatorAnnouncesIt) {
-  const motion::Rule& rule = table().rule(2);  // direction 0, first piston, go ahead
+  const motion::Rule& rule = testing::paperRules().rule(2);  // direction 0, first piston, go ahead
   const Cell pivot{5, 5, 5};
   const Cell mobile = pivot + rule.mobileOffset;
   std::map<uint32_t, Script> programs;
@@ -47,7 +43,7 @@ TEST(TraceWriter, RecordsAMotionAsTheSimulatorAnnouncesIt) {
   const world::World world = WorldBuilder().module(pivot).module(mobile).build();
   TraceWriter trace;
   trace.header(world, "one motion");
-  sim::Simulator simulator(world, table(), {});
+  sim::Simulator simulator(world, testing::paperRules(), {});
   simulator.subscribe(&trace);
   simulator.install(testing::scripts(programs));
   simulator.startAll();

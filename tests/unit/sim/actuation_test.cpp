@@ -11,6 +11,7 @@
 #include "motion/motion.h"
 #include "scene/random_scene.h"
 #include "sim/simulator.h"
+#include "support/rule_table.h"
 #include "support/scripted_program.h"
 #include "support/world_builder.h"
 
@@ -21,11 +22,6 @@ using geometry::Cell;
 using testing::Script;
 using testing::scripts;
 using testing::WorldBuilder;
-
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
 
 // Every time and energy different, so that one taken for another shows.
 ActuatorModel model() {
@@ -65,7 +61,7 @@ TEST(Actuation, AProgramsCompressionAndReleaseTakeTheModelsTimes) {
       ASSERT_TRUE(c.release().ok());
     }
   };
-  Simulator simulator(WorldBuilder().modules({{0, 0, 0}, {1, 0, 0}}).build(), table(),
+  Simulator simulator(WorldBuilder().modules({{0, 0, 0}, {1, 0, 0}}).build(), testing::paperRules(),
                       withActuators());
   simulator.install(scripts(programs));
   simulator.startAll();
@@ -88,11 +84,7 @@ TEST(Actuation, AProgramsCompressionAndReleaseTakeTheModelsTimes) {
 }
 
 // A pivot in mid-air with a mobile beside it: the go-ahead rule of the table's first neighbour.
-struct Stage {
-  const motion::Rule& rule = table().rule(2);
-  Cell pivot{5, 5, 5};
-  Cell mobile = pivot + rule.mobileOffset;
-};
+using Stage = testing::StagedRule;
 
 Time motionEnd(const SimulationOptions& options, std::optional<EnergyReport>* energy = nullptr) {
   const Stage stage;
@@ -106,8 +98,8 @@ Time motionEnd(const SimulationOptions& options, std::optional<EnergyReport>* en
     }
   };
   programs[2].moved = [&](Context& c) { arrived = c.now(); };
-  Simulator simulator(WorldBuilder().module(stage.pivot).module(stage.mobile).build(), table(),
-                      options);
+  Simulator simulator(WorldBuilder().module(stage.pivot).module(stage.mobile).build(),
+                      testing::paperRules(), options);
   simulator.install(scripts(programs));
   simulator.startAll();
   const Status status = simulator.run();
@@ -161,7 +153,8 @@ TEST(Actuation, ADoubleDeformationSwitchesInTheModelsTimes) {
   ASSERT_TRUE(world.ok()) << world.error();
   const world::Module& mover = *world->find(ModuleId{32});
   std::optional<motion::Motion> chosen;
-  for (motion::Motion& motion : motion::validMotions(*world, table(), {mover.cell, mover.id}, {})) {
+  for (motion::Motion& motion :
+       motion::validMotions(*world, testing::paperRules(), {mover.cell, mover.id}, {})) {
     if (motion.rule == 24 && motion.pivot == ModuleId{20}) chosen = std::move(motion);
   }
   ASSERT_TRUE(chosen.has_value()) << "the scene generator changed: find another case";
@@ -188,7 +181,7 @@ TEST(Actuation, ADoubleDeformationSwitchesInTheModelsTimes) {
     ASSERT_TRUE(c.move(*listed).ok());
   };
   programs[32].moved = [&](Context& c) { arrived = c.now(); };
-  Simulator simulator(std::move(*world), table(), withActuators());
+  Simulator simulator(std::move(*world), testing::paperRules(), withActuators());
   simulator.install(scripts(programs));
   simulator.startAll();
   const Status run = simulator.run();

@@ -10,6 +10,7 @@
 #include "sim/invariants.h"
 #include "sim/public_motion.h"
 #include "sim/simulator.h"
+#include "support/rule_table.h"
 #include "support/scripted_program.h"
 #include "support/world_builder.h"
 
@@ -20,11 +21,6 @@ using geometry::Cell;
 using testing::Script;
 using testing::scripts;
 using testing::WorldBuilder;
-
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
 
 // A 6x6 floor, and modules on top of it.
 world::World floorWith(std::initializer_list<Cell> above) {
@@ -38,7 +34,7 @@ world::World floorWith(std::initializer_list<Cell> above) {
 std::vector<motion::Motion> freeMotions(const world::World& world, const Cell& cell) {
   std::vector<motion::Motion> out;
   const world::Module* module = world.moduleAt(cell);
-  for (auto& motion : motion::validMotions(world, table(), {cell, module->id}, {})) {
+  for (auto& motion : motion::validMotions(world, testing::paperRules(), {cell, module->id}, {})) {
     if (motion.deformations.empty()) out.push_back(std::move(motion));
   }
   return out;
@@ -79,7 +75,7 @@ struct Duel {
       secondResult = c.move(sim::toPublic(second));
     };
     programs[secondId].refused = [&](Context&, const MoveRefusal& r) { laterRefusal = r; };
-    Simulator simulator(world, table(), options);
+    Simulator simulator(world, testing::paperRules(), options);
     simulator.subscribe(&recorder);
     simulator.install(scripts(programs));
     simulator.startAll();
@@ -141,7 +137,7 @@ TEST(Concurrency, APivotTurnsOneMobileAtATime) {
       for (const motion::Motion& ma : freeMotions(duel.world, a)) {
         const world::World alone = floorWith({pivot, b});
         for (const motion::Motion& mb :
-             motion::validMotions(alone, table(), {b, alone.moduleAt(b)->id}, {})) {
+             motion::validMotions(alone, testing::paperRules(), {b, alone.moduleAt(b)->id}, {})) {
           if (found || ma.pivot != pivotId || mb.pivot != pivotId) continue;
           duel.first = ma;
           duel.second = mb;
@@ -249,7 +245,7 @@ TEST(Concurrency, WithConnectivityOnAMotionThatCutsAModuleOffIsRefusedNamingIt) 
     std::map<uint32_t, Script> programs;
     std::optional<MoveResult> result;
     programs[37].start = [&](Context& c) { result = c.move(sim::toPublic(duel.first)); };
-    Simulator simulator(duel.world, table(), duel.options);
+    Simulator simulator(duel.world, testing::paperRules(), duel.options);
     simulator.install(scripts(programs));
     simulator.startAll();
     ASSERT_TRUE(simulator.run().ok());
@@ -276,7 +272,7 @@ TEST(Concurrency, WithConnectivityOnACompressionThatCutsAModuleOffIsRefused) {
     upward = c.compress(c.pistonAlong(4));
     sideways = c.compress(c.pistonAlong(3));
   };
-  Simulator simulator(floorWith({{2, 2, 1}, {2, 2, 2}}), table(), options);
+  Simulator simulator(floorWith({{2, 2, 1}, {2, 2, 2}}), testing::paperRules(), options);
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
@@ -296,13 +292,13 @@ struct Parts {
   MotionExecutor motions;
   Parts(world::World w, MotionLimits limits)
       : world(std::move(w)),
-        motions(world, table(), {}, mechanics, agenda, announce,
+        motions(world, testing::paperRules(), {}, mechanics, agenda, announce,
                 ActuationTimes::fixed(500 * kMillisecond, kSecond), limits) {}
 };
 
 TEST(Invariants, AHelperThatLetsGoWhileTheMobilePassesIsCaught) {
   // The go-ahead rule with a module in cell C (def(R)) held by a support behind it.
-  const motion::Rule& rule = table().rule(2);
+  const motion::Rule& rule = testing::paperRules().rule(2);
   const Cell pivot{5, 5, 5};
   const Cell mobile = pivot + rule.mobileOffset;
   const Cell helper = pivot + rule.cells[2].offset;

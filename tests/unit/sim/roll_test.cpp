@@ -6,6 +6,7 @@
 
 #include "geometry/lattice.h"
 #include "sim/simulator.h"
+#include "support/rule_table.h"
 #include "support/scripted_program.h"
 #include "support/world_builder.h"
 
@@ -16,11 +17,6 @@ using geometry::Cell;
 using testing::Script;
 using testing::scripts;
 using testing::WorldBuilder;
-
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
 
 SimulationOptions catoms() {
   SimulationOptions options;
@@ -49,7 +45,8 @@ TEST(Roll, ACatomListsItsRollsAsMotionsAndLandsHeldByItsPivot) {
     started = rollTo(c, kD, catom3d::Face::kHexagonal);
   };
   programs[2].moved = [&](Context& c) { arrived = c.now(); };
-  Simulator simulator(WorldBuilder().module(kP).module(kM).build(), table(), catoms());
+  Simulator simulator(WorldBuilder().module(kP).module(kM).build(), testing::paperRules(),
+                      catoms());
   simulator.install(scripts(programs));
   simulator.startAll();
   const Status status = simulator.run();
@@ -82,8 +79,8 @@ TEST(Roll, ARollIntoACellBetweenTwoOppositeModulesIsRefusedWithTheReason) {
     started = rollTo(c, kD, catom3d::Face::kHexagonal);
   };
   // A module beyond the goal: the goal lies between it and the pivot.
-  Simulator simulator(WorldBuilder().module(kP).module(kM).module({3, 3, 5}).build(), table(),
-                      catoms());
+  Simulator simulator(WorldBuilder().module(kP).module(kM).module({3, 3, 5}).build(),
+                      testing::paperRules(), catoms());
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
@@ -101,8 +98,8 @@ TEST(Roll, ARollIntoACellBetweenTwoOppositeModulesIsRefusedWithTheReason) {
   std::optional<MoveResult> asked;
   std::map<uint32_t, Script> again;
   again[2].start = [&](Context& c) { asked = c.move(kept); };
-  Simulator second(WorldBuilder().module(kP).module(kM).module({3, 3, 5}).build(), table(),
-                   catoms());
+  Simulator second(WorldBuilder().module(kP).module(kM).module({3, 3, 5}).build(),
+                   testing::paperRules(), catoms());
   second.install(scripts(again));
   second.startAll();
   ASSERT_TRUE(second.run().ok());
@@ -148,7 +145,7 @@ TEST(Roll, TwoRollsIntoOneCellAtOnceTheSecondIsRefusedNamingTheFirst) {
   };
   Simulator simulator(
       WorldBuilder().module(kP).module(kM).module(second->first).module(second->second).build(),
-      table(), catoms());
+      testing::paperRules(), catoms());
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "geometry/lattice.h"
+#include "support/rule_table.h"
 #include "support/scripted_program.h"
 #include "support/world_builder.h"
 
@@ -27,11 +28,6 @@ struct Ping {
   int32_t hops;
 };
 
-const motion::RuleTable& table() {
-  static const motion::RuleTable kTable;
-  return kTable;
-}
-
 TEST(Simulator, SendingThroughAnUnlatchedConnectorIsAnError) {
   std::map<uint32_t, Script> programs;
   Status sent = Ok{};
@@ -39,7 +35,8 @@ TEST(Simulator, SendingThroughAnUnlatchedConnectorIsAnError) {
     // Connector facing +y: nothing there.
     sent = c.send(c.ownConnector(1), Message::of(Ping{0}));
   };
-  Simulator simulator(WorldBuilder().modules({{0, 0, 0}, {1, 0, 0}}).build(), table(), {});
+  Simulator simulator(WorldBuilder().modules({{0, 0, 0}, {1, 0, 0}}).build(), testing::paperRules(),
+                      {});
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
@@ -63,8 +60,8 @@ TEST(Simulator, AMessageArrivesAfterTheDelayThroughTheFacingConnector) {
   SimulationOptions options;
   options.messageDelay = 7 * kMillisecond;
   // Module 2 turned (orientation 9): its own connector facing -x is not 6.
-  Simulator simulator(WorldBuilder().module({0, 0, 0}).module({1, 0, 0}, 9).build(), table(),
-                      options);
+  Simulator simulator(WorldBuilder().module({0, 0, 0}).module({1, 0, 0}, 9).build(),
+                      testing::paperRules(), options);
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
@@ -118,7 +115,7 @@ Heard tellNeighbours(bool all, int* sentCount, Time jitter, Announced* announced
   const std::array<int, 7> orientations = {0, 9, 3, 17, 22, 1, 12};
   for (int d = 0; d < 7; ++d)
     world.module(centre + geometry::neighbourOffset(2 * d % 12 + d / 6), orientations[size_t(d)]);
-  Simulator simulator(world.build(), table(), options);
+  Simulator simulator(world.build(), testing::paperRules(), options);
   if (announced) simulator.subscribe(announced);
   simulator.install(scripts(programs));
   simulator.startAll();
@@ -158,7 +155,7 @@ TEST(Simulator, EventsAtTheSameTimeRunInTheOrderTheyWereScheduled) {
     for (int tag = 0; tag < 5; ++tag) c.setTimer(kSecond, tag);
   };
   programs[1].timer = [&](Context&, int tag) { order.push_back(tag); };
-  Simulator simulator(WorldBuilder().module({0, 0, 0}).build(), table(), {});
+  Simulator simulator(WorldBuilder().module({0, 0, 0}).build(), testing::paperRules(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
@@ -170,7 +167,7 @@ TEST(Simulator, ASecondPistonIsRefusedWhileOneIsCompressed) {
   Status second = Ok{};
   programs[1].start = [](Context& c) { ASSERT_TRUE(c.compress(0).ok()); };
   programs[1].deformed = [&](Context& c) { second = c.compress(1); };
-  Simulator simulator(WorldBuilder().module({0, 0, 0}).build(), table(), {});
+  Simulator simulator(WorldBuilder().module({0, 0, 0}).build(), testing::paperRules(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
@@ -179,11 +176,7 @@ TEST(Simulator, ASecondPistonIsRefusedWhileOneIsCompressed) {
 }
 
 // A pivot in mid-air with a mobile beside it: the go-ahead rule of the table's first neighbour.
-struct Stage {
-  const motion::Rule& rule = table().rule(2);  // direction 0, first piston, go ahead
-  Cell pivot{5, 5, 5};
-  Cell mobile = pivot + rule.mobileOffset;
-};
+using Stage = testing::StagedRule;
 
 TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
   const Stage stage;
@@ -196,7 +189,8 @@ TEST(Simulator, AMotionKeepsTheMobileLatchedAndLandsAsTheGeometryPredicts) {
     }
   };
   programs[2].moved = [&](Context&) { done = true; };
-  Simulator simulator(WorldBuilder().module(stage.pivot).module(stage.mobile).build(), table(), {});
+  Simulator simulator(WorldBuilder().module(stage.pivot).module(stage.mobile).build(),
+                      testing::paperRules(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
   const Status status = simulator.run();
@@ -232,7 +226,7 @@ TEST(Simulator, AMotionWhoseGoalIsTakenIsRefusedWithTheReason) {
                           .module(stage.mobile)
                           .module(stage.pivot + stage.rule.goalOffset)
                           .build(),
-                      table(), {});
+                      testing::paperRules(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
@@ -269,7 +263,7 @@ TEST(Simulator, AMotionWhoseHelperHasNotCompressedIsRefused) {
       if (m.rule == stage.rule.index) started = c.move(m);
     }
   };
-  Simulator simulator(stage.build(), table(), {});
+  Simulator simulator(stage.build(), testing::paperRules(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
@@ -297,7 +291,7 @@ TEST(Simulator, ReleasingAPistonAMotionNeedsIsRefusedNamingTheMotion) {
       }
     }
   };
-  Simulator simulator(stage.build(), table(), {});
+  Simulator simulator(stage.build(), testing::paperRules(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
   const Status status = simulator.run();
@@ -332,7 +326,8 @@ TEST(Simulator, TheContextTurnsTheModulesNumbersIntoTheWorldsAndBack) {
     EXPECT_EQ(c.slot(), 0u);
     checked = true;
   };
-  Simulator simulator(WorldBuilder().module({1, 1, 1}, 17).module({2, 1, 1}).build(), table(), {});
+  Simulator simulator(WorldBuilder().module({1, 1, 1}, 17).module({2, 1, 1}).build(),
+                      testing::paperRules(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());
@@ -352,7 +347,8 @@ TEST(Simulator, AMotionIsDescribedOnlyWhenAskedAndAnUnknownRuleIsRefused) {
       unknown = c.move(m);
     }
   };
-  Simulator simulator(WorldBuilder().module(stage.pivot).module(stage.mobile).build(), table(), {});
+  Simulator simulator(WorldBuilder().module(stage.pivot).module(stage.mobile).build(),
+                      testing::paperRules(), {});
   simulator.install(scripts(programs));
   simulator.startAll();
   ASSERT_TRUE(simulator.run().ok());

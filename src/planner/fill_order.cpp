@@ -13,6 +13,7 @@ using geometry::Cell;
 
 namespace {
 
+// The directions that go one layer down (those on the layer: geometry::kSameLayerDirections).
 constexpr std::array<int, 4> kBelow = {8, 9, 10, 11};
 
 // Rule 4's rank of every cell: the squared distance of its centre from the centre of its layer's

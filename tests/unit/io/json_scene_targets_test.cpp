@@ -11,6 +11,8 @@
 namespace datomsim::io {
 namespace {
 
+using datomsim::testing::jsonSceneError;
+
 using geometry::Cell;
 using geometry::Vec3;
 using testing::sameScene;
@@ -85,78 +87,68 @@ TEST(JsonSceneTargets, ReadsTargetsBeforeModulesAndAnEmptyGrid) {
 }
 
 TEST(JsonSceneTargets, RefusesTargetsThatAreNotTargetObjects) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                R"({"format":"datomsim-scene","version":1,"modules":[],"targets":{}})"),
+  EXPECT_EQ(jsonSceneError(R"({"format":"datomsim-scene","version":1,"modules":[],"targets":{}})"),
             "box.json: targets: expected an array of targets, got {}");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withTargets("1")),
+  EXPECT_EQ(jsonSceneError(withTargets("1")),
             "box.json: targets[0]: expected a target object, got 1");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withTargets(R"({"cells":[]})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"cells":[]})")),
             "box.json: targets[0]: missing \"format\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"grid","cells":[]},{"format":"mesh"})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"grid","cells":[]},{"format":"mesh"})")),
             "box.json: targets[1].format: expected \"grid\" or \"csg\", got \"mesh\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"grid","cells":[],"colour":[1,2,3]})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"grid","cells":[],"colour":[1,2,3]})")),
             "box.json: targets[0]: unknown key \"colour\" for a grid target");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"csg","content":"sphere(1);","cells":[]})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"csg","content":"sphere(1);","cells":[]})")),
             "box.json: targets[0]: unknown key \"cells\" for a csg target");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"grid","cells":[],"cells":[[1,1,0]]})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"grid","cells":[],"cells":[[1,1,0]]})")),
             "box.json: targets: duplicate key \"cells\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"grid","color":[1,2],"cells":[]})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"grid","color":[1,2],"cells":[]})")),
             "box.json: targets[0].color: expected three integers 0..255, got [1,2]");
 }
 
 TEST(JsonSceneTargets, RefusesBadGridCellsAndColours) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withTargets(R"({"format":"grid"})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"grid"})")),
             "box.json: targets[0]: missing \"cells\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"grid","cells":[[1,1,0],[1,2]]})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"grid","cells":[[1,1,0],[1,2]]})")),
             "box.json: targets[0].cells[1]: expected three integers, got [1,2]");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"grid","cells":[[1,1,0],[2,2,0],[1,1,0]]})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"grid","cells":[[1,1,0],[2,2,0],[1,1,0]]})")),
             "box.json: targets[0].cells: cell 1,1,0 is listed twice: cells[0] and cells[2]");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"grid","cells":[[1,1,0]],"colors":[null,null]})")),
-            "box.json: targets[0].colors: expected an array of 1 entries, one per cell, got "
-            "[null,null]");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"grid","cells":[[1,1,0]],"colors":[[0,0,300]]})")),
-            "box.json: targets[0].colors[0]: expected null or three integers 0..255, got "
-            "[0,0,300]");
+  EXPECT_EQ(
+      jsonSceneError(withTargets(R"({"format":"grid","cells":[[1,1,0]],"colors":[null,null]})")),
+      "box.json: targets[0].colors: expected an array of 1 entries, one per cell, got "
+      "[null,null]");
+  EXPECT_EQ(
+      jsonSceneError(withTargets(R"({"format":"grid","cells":[[1,1,0]],"colors":[[0,0,300]]})")),
+      "box.json: targets[0].colors[0]: expected null or three integers 0..255, got "
+      "[0,0,300]");
 }
 
 // A cell no module may hold could never be filled; the grid may come after the targets.
 TEST(JsonSceneTargets, RefusesGridCellsBelowTheGroundBeyondTheRangeOrOutsideTheGrid) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"grid","cells":[[1,1,0],[1,1,-3]]})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"grid","cells":[[1,1,0],[1,1,-3]]})")),
             "box.json: targets[0].cells[1]: cell 1,1,-3 is below the ground (z < 0)");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"grid","cells":[[5000000,1,0]]})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"grid","cells":[[5000000,1,0]]})")),
             "box.json: targets[0].cells[0]: cell 5000000,1,0 is outside the supported "
             "coordinate range (-1048576 to 1048575)");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                R"({"format":"datomsim-scene","version":1,"modules":[],"targets":[)"
-                R"({"format":"grid","cells":[[1,1,0]]},{"format":"grid","cells":[[12,1,0]]}],)"
-                R"("grid":[11,11,11]})"),
-            "box.json: targets[1].cells[0]: cell 12,1,0 is outside the grid 11,11,11");
+  EXPECT_EQ(
+      jsonSceneError(R"({"format":"datomsim-scene","version":1,"modules":[],"targets":[)"
+                     R"({"format":"grid","cells":[[1,1,0]]},{"format":"grid","cells":[[12,1,0]]}],)"
+                     R"("grid":[11,11,11]})"),
+      "box.json: targets[1].cells[0]: cell 12,1,0 is outside the grid 11,11,11");
 }
 
 // The same for a CSG target's cells below the ground or beyond the range, found where its shape's
 // box leaves them, and named with the shape.
 TEST(JsonSceneTargets, RefusesCsgCellsBelowTheGroundOrBeyondTheRange) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"csg","content":"sphere(2);","boundingBox":false})")),
-            "box.json: targets[0]: the CSG shape \"sphere(2);\" holds cell 1,1,-3, which is "
-            "below the ground (z < 0): no module could fill it");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"csg","content":"sphere(1);","boundingBox":false,)"
-                            R"("translate":[-5000000,0,3]})")),
-            "box.json: targets[0]: the CSG shape \"sphere(1);\" holds cell -5000002,-2,3, which "
-            "is outside the supported coordinate range (-1048576 to 1048575): no module could "
-            "fill it");
+  EXPECT_EQ(
+      jsonSceneError(withTargets(R"({"format":"csg","content":"sphere(2);","boundingBox":false})")),
+      "box.json: targets[0]: the CSG shape \"sphere(2);\" holds cell 1,1,-3, which is "
+      "below the ground (z < 0): no module could fill it");
+  EXPECT_EQ(
+      jsonSceneError(withTargets(R"({"format":"csg","content":"sphere(1);","boundingBox":false,)"
+                                 R"("translate":[-5000000,0,3]})")),
+      "box.json: targets[0]: the CSG shape \"sphere(1);\" holds cell -5000002,-2,3, which "
+      "is outside the supported coordinate range (-1048576 to 1048575): no module could "
+      "fill it");
   // A grid clips a shape (VisibleSim's own examples touch its edges): what lies beyond is left.
   const auto clipped = parseJsonScene(R"({"format":"datomsim-scene","version":1,"modules":[],)"
                                       R"("targets":[{"format":"csg","content":"cube([30,2,2]);"}],)"
@@ -170,20 +162,20 @@ TEST(JsonSceneTargets, RefusesCsgCellsBelowTheGroundOrBeyondTheRange) {
 }
 
 TEST(JsonSceneTargets, RefusesBadCsgTargets) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withTargets(R"({"format":"csg"})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"csg"})")),
             "box.json: targets[0]: missing \"content\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withTargets(R"({"format":"csg","content":3})")),
+  EXPECT_EQ(jsonSceneError(withTargets(R"({"format":"csg","content":3})")),
             "box.json: targets[0].content: expected a string, got 3");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"csg","content":"translate(1,2,3) sphere(1);"})")),
-            "box.json: targets[0].content: csg:1:11: expected \"[\" after translate(, got \"1\"; "
-            "the content is \"translate(1,2,3) sphere(1);\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"csg","content":"sphere(1);","offset":"true"})")),
-            "box.json: targets[0].offset: expected true or false, got \"true\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withTargets(R"({"format":"csg","content":"sphere(1);","translate":[1,2]})")),
-            "box.json: targets[0].translate: expected three numbers, got [1,2]");
+  EXPECT_EQ(
+      jsonSceneError(withTargets(R"({"format":"csg","content":"translate(1,2,3) sphere(1);"})")),
+      "box.json: targets[0].content: csg:1:11: expected \"[\" after translate(, got \"1\"; "
+      "the content is \"translate(1,2,3) sphere(1);\"");
+  EXPECT_EQ(
+      jsonSceneError(withTargets(R"({"format":"csg","content":"sphere(1);","offset":"true"})")),
+      "box.json: targets[0].offset: expected true or false, got \"true\"");
+  EXPECT_EQ(
+      jsonSceneError(withTargets(R"({"format":"csg","content":"sphere(1);","translate":[1,2]})")),
+      "box.json: targets[0].translate: expected three numbers, got [1,2]");
 }
 
 }  // namespace

@@ -14,6 +14,8 @@
 namespace datomsim::io {
 namespace {
 
+using datomsim::testing::jsonSceneError;
+
 using geometry::Cell;
 using testing::sameScene;
 
@@ -135,7 +137,7 @@ TEST(JsonScene, AcceptsKeysInAnyOrder) {
 
 TEST(JsonScene, RefusesASyntaxErrorNamingLineAndColumn) {
   const std::string text = "{\n  \"format\": \"datomsim-scene\",\n  \"version\": 1 x\n}\n";
-  EXPECT_EQ(datomsim::testing::jsonSceneError(text),
+  EXPECT_EQ(jsonSceneError(text),
             "box.json:3:16: syntax error while parsing object - invalid literal; last read: "
             "'1 x'; expected '}'");
   // The same position as nlohmann's own message.
@@ -149,15 +151,13 @@ TEST(JsonScene, RefusesASyntaxErrorNamingLineAndColumn) {
 }
 
 TEST(JsonScene, RefusesTruncatedAndEmptyText) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError("").rfind("box.json:1:0: syntax error", 0), 0u)
-      << datomsim::testing::jsonSceneError("");
+  EXPECT_EQ(jsonSceneError("").rfind("box.json:1:0: syntax error", 0), 0u) << jsonSceneError("");
   const std::string truncated = toJson(smallScene()).substr(0, 150);
-  EXPECT_NE(datomsim::testing::jsonSceneError(truncated).find("syntax error"), std::string::npos);
+  EXPECT_NE(jsonSceneError(truncated).find("syntax error"), std::string::npos);
 }
 
 TEST(JsonScene, RefusesTrailingGarbage) {
-  EXPECT_NE(datomsim::testing::jsonSceneError(withModules("") + " {}").find("syntax error"),
-            std::string::npos);
+  EXPECT_NE(jsonSceneError(withModules("") + " {}").find("syntax error"), std::string::npos);
 }
 
 TEST(JsonScene, StreamReaderFindsTheSameLineAndColumn) {
@@ -174,7 +174,7 @@ TEST(JsonScene, RefusesANulByteNamingItsPlace) {
   const std::string expected =
       "box.json:" + std::to_string(1 + std::count(text.begin(), text.end(), '\n') - 0) +
       ":1: a NUL byte, which no JSON text holds (a scene file is text)";
-  EXPECT_EQ(datomsim::testing::jsonSceneError(text), expected);
+  EXPECT_EQ(jsonSceneError(text), expected);
   std::istringstream input(text);
   const auto scene = parseJsonScene(input, "box.json");
   ASSERT_FALSE(scene.ok());
@@ -220,63 +220,56 @@ TEST(JsonScene, ReadsManyViewerAttributesAndRefusesADuplicateAmongThem) {
   const std::string twice =
       "{\"format\": \"datomsim-scene\", \"version\": 1, \"visiblesim\": "
       "{\"world\": {\"a\": \"1\", \"b\": \"2\", \"a\": \"3\"}}, \"modules\": []}";
-  EXPECT_NE(datomsim::testing::jsonSceneError(twice).find("duplicate key \"a\""), std::string::npos)
-      << datomsim::testing::jsonSceneError(twice);
+  EXPECT_NE(jsonSceneError(twice).find("duplicate key \"a\""), std::string::npos)
+      << jsonSceneError(twice);
 }
 
 TEST(JsonScene, RefusesAnotherFormat) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError("{\"format\":\"gltf\",\"version\":1,\"modules\":[]}"),
+  EXPECT_EQ(jsonSceneError("{\"format\":\"gltf\",\"version\":1,\"modules\":[]}"),
             "box.json: format: not a datomsim scene: expected \"datomsim-scene\", got \"gltf\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError("{\"version\":1,\"modules\":[]}"),
+  EXPECT_EQ(jsonSceneError("{\"version\":1,\"modules\":[]}"),
             "box.json: missing \"format\": not a datomsim-scene file");
-  EXPECT_EQ(datomsim::testing::jsonSceneError("[1,2]"),
-            "box.json: expected a JSON object at the top level");
+  EXPECT_EQ(jsonSceneError("[1,2]"), "box.json: expected a JSON object at the top level");
 }
 
 TEST(JsonScene, RefusesAnUnsupportedVersion) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                "{\"format\":\"datomsim-scene\",\"version\":2,\"modules\":[]}"),
+  EXPECT_EQ(jsonSceneError("{\"format\":\"datomsim-scene\",\"version\":2,\"modules\":[]}"),
             "box.json: version: version 2 of datomsim-scene is not supported; this build reads "
             "version 1");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                "{\"format\":\"datomsim-scene\",\"version\":\"1\",\"modules\":[]}"),
+  EXPECT_EQ(jsonSceneError("{\"format\":\"datomsim-scene\",\"version\":\"1\",\"modules\":[]}"),
             "box.json: version: expected an integer, got \"1\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError("{\"format\":\"datomsim-scene\",\"modules\":[]}"),
+  EXPECT_EQ(jsonSceneError("{\"format\":\"datomsim-scene\",\"modules\":[]}"),
             "box.json: missing \"version\"");
 }
 
 TEST(JsonScene, RefusesACellWithTwoNumbersNamingThePath) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withModules("{\"cell\":[0,0,0]},{\"cell\":[1,0,0]},{\"cell\":[2,0,0]},"
-                            "{\"id\":4,\"cell\":[1,2]}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[0,0,0]},{\"cell\":[1,0,0]},{\"cell\":[2,0,0]},"
+                                       "{\"id\":4,\"cell\":[1,2]}")),
             "box.json: modules[3].cell: expected three integers, got [1,2]");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"cell\":[1,2.5,0]}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[1,2.5,0]}")),
             "box.json: modules[0].cell: expected three integers, got [1,2.5,0]");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"cell\":[1,[2],0]}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[1,[2],0]}")),
             "box.json: modules[0].cell: expected three integers, got [1,[2],0]");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"id\":1}")),
-            "box.json: modules[0]: missing \"cell\"");
+  EXPECT_EQ(jsonSceneError(withModules("{\"id\":1}")), "box.json: modules[0]: missing \"cell\"");
 }
 
 TEST(JsonScene, RefusesBadModuleFields) {
-  EXPECT_EQ(
-      datomsim::testing::jsonSceneError(withModules("{\"cell\":[0,0,0],\"color\":[0,256,0]}")),
-      "box.json: modules[0].color: expected three integers 0..255, got [0,256,0]");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"cell\":[0,0,0],\"orientation\":24}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[0,0,0],\"color\":[0,256,0]}")),
+            "box.json: modules[0].color: expected three integers 0..255, got [0,256,0]");
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[0,0,0],\"orientation\":24}")),
             "box.json: modules[0].orientation: expected an integer 0..23, got 24");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"cell\":[0,0,0],\"id\":0}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[0,0,0],\"id\":0}")),
             "box.json: modules[0].id: expected an integer 1..4294967295, got 0");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"cell\":[0,0,0],\"id\":-3}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[0,0,0],\"id\":-3}")),
             "box.json: modules[0].id: expected an integer 1..4294967295, got -3");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("5")),
+  EXPECT_EQ(jsonSceneError(withModules("5")),
             "box.json: modules[0]: expected a module object, got 5");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                "{\"format\":\"datomsim-scene\",\"version\":1,\"modules\":{}}"),
+  EXPECT_EQ(jsonSceneError("{\"format\":\"datomsim-scene\",\"version\":1,\"modules\":{}}"),
             "box.json: modules: expected an array of modules, got {}");
 }
 
 TEST(JsonScene, ShortensLongValuesInMessages) {
-  const std::string error = datomsim::testing::jsonSceneError(withModules(
+  const std::string error = jsonSceneError(withModules(
       "{\"cell\":[1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20,21,22,23,24,25,26]}"));
   EXPECT_EQ(error,
             "box.json: modules[0].cell: expected three integers, got "
@@ -284,66 +277,60 @@ TEST(JsonScene, ShortensLongValuesInMessages) {
 }
 
 TEST(JsonScene, RefusesBadHeaderFields) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("", "[11,11]")),
+  EXPECT_EQ(jsonSceneError(withModules("", "[11,11]")),
             "box.json: grid: expected null or three positive integers, got [11,11]");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                "{\"format\":\"datomsim-scene\",\"version\":1,\"blockSize\":[1,0,1],"
-                "\"modules\":[]}"),
+  EXPECT_EQ(jsonSceneError("{\"format\":\"datomsim-scene\",\"version\":1,\"blockSize\":[1,0,1],"
+                           "\"modules\":[]}"),
             "box.json: blockSize: expected three positive numbers, got [1,0,1]");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                "{\"format\":\"datomsim-scene\",\"version\":1,\"name\":3,\"modules\":[]}"),
-            "box.json: name: expected a string, got 3");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                "{\"format\":\"datomsim-scene\",\"version\":1,"
-                "\"visiblesim\":{\"camera\":{\"angle\":30}},\"modules\":[]}"),
+  EXPECT_EQ(
+      jsonSceneError("{\"format\":\"datomsim-scene\",\"version\":1,\"name\":3,\"modules\":[]}"),
+      "box.json: name: expected a string, got 3");
+  EXPECT_EQ(jsonSceneError("{\"format\":\"datomsim-scene\",\"version\":1,"
+                           "\"visiblesim\":{\"camera\":{\"angle\":30}},\"modules\":[]}"),
             "box.json: visiblesim.camera.angle: expected a string, got 30");
-  EXPECT_EQ(datomsim::testing::jsonSceneError("{\"format\":\"datomsim-scene\",\"version\":1,"
-                                              "\"visiblesim\":{\"lights\":{}},\"modules\":[]}"),
+  EXPECT_EQ(jsonSceneError("{\"format\":\"datomsim-scene\",\"version\":1,"
+                           "\"visiblesim\":{\"lights\":{}},\"modules\":[]}"),
             "box.json: visiblesim: unknown key \"lights\"");
 }
 
 TEST(JsonScene, RefusesUnknownAndDuplicateKeys) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"cell\":[0,0,0],\"colour\":[1,2,3]}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[0,0,0],\"colour\":[1,2,3]}")),
             "box.json: modules[0]: unknown key \"colour\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"cell\":[0,0,0],\"cell\":[1,0,0]}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[0,0,0],\"cell\":[1,0,0]}")),
             "box.json: modules[0]: duplicate key \"cell\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                "{\"format\":\"datomsim-scene\",\"version\":1,\"modules\":[],\"extra\":1}"),
-            "box.json: unknown top-level key \"extra\"");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                "{\"format\":\"datomsim-scene\",\"format\":\"datomsim-scene\"}"),
+  EXPECT_EQ(
+      jsonSceneError("{\"format\":\"datomsim-scene\",\"version\":1,\"modules\":[],\"extra\":1}"),
+      "box.json: unknown top-level key \"extra\"");
+  EXPECT_EQ(jsonSceneError("{\"format\":\"datomsim-scene\",\"format\":\"datomsim-scene\"}"),
             "box.json: duplicate key \"format\"");
 }
 
 TEST(JsonScene, RefusesTwoModulesInOneCellNamingBoth) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withModules("{\"cell\":[1,1,0]},{\"cell\":[2,1,0]},{\"cell\":[1,1,0]}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[1,1,0]},{\"cell\":[2,1,0]},{\"cell\":[1,1,0]}")),
             "box.json: modules[2].cell: cell 1,1,0 is already occupied by modules[0] (id 1)");
   // The first error in the file is the one reported, whichever kind comes after it.
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
+  EXPECT_EQ(jsonSceneError(
                 withModules("{\"cell\":[1,1,0]},{\"cell\":[1,1,0]},{\"id\":1,\"cell\":[3,1,0]}")),
             "box.json: modules[1].cell: cell 1,1,0 is already occupied by modules[0] (id 1)");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
+  EXPECT_EQ(jsonSceneError(
                 withModules("{\"cell\":[1,1,0]},{\"id\":1,\"cell\":[3,1,0]},{\"cell\":[1,1,0]}")),
             "box.json: modules[1].id: id 1 is already used by modules[0]");
 }
 
 TEST(JsonScene, RefusesADuplicateIdNamingBoth) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withModules("{\"id\":5,\"cell\":[1,1,0]},{\"id\":5,\"cell\":[2,1,0]}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"id\":5,\"cell\":[1,1,0]},{\"id\":5,\"cell\":[2,1,0]}")),
             "box.json: modules[1].id: id 5 is already used by modules[0]");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(
-                withModules("{\"id\":2,\"cell\":[1,1,0]},{\"cell\":[2,1,0]}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"id\":2,\"cell\":[1,1,0]},{\"cell\":[2,1,0]}")),
             "box.json: modules[1]: gets id 2 from its place in the list, already used by "
             "modules[0]; give it an \"id\"");
 }
 
 TEST(JsonScene, RefusesCellsOutsideTheGridOrBelowTheGround) {
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"cell\":[0,11,0]}")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[0,11,0]}")),
             "box.json: modules[0].cell: cell 0,11,0 is outside the grid 11,11,11");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"cell\":[0,0,-1]}", "null")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[0,0,-1]}", "null")),
             "box.json: modules[0].cell: cell 0,0,-1 is below the ground (z < 0)");
-  EXPECT_EQ(datomsim::testing::jsonSceneError(withModules("{\"cell\":[2000000,0,0]}", "null")),
+  EXPECT_EQ(jsonSceneError(withModules("{\"cell\":[2000000,0,0]}", "null")),
             "box.json: modules[0].cell: cell 2000000,0,0 is outside the supported coordinate "
             "range (-1048576 to 1048575)");
 }

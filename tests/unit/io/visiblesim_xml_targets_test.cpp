@@ -12,6 +12,8 @@
 namespace datomsim::io {
 namespace {
 
+using datomsim::testing::xmlSceneError;
+
 using geometry::Cell;
 using geometry::Vec3;
 using testing::sameScene;
@@ -113,39 +115,33 @@ TEST(VisibleSimXmlTargets, KeepsACsgTextOnSeveralLinesAndReadsBooleansAsTinyxml2
 }
 
 TEST(VisibleSimXmlTargets, RefusesATargetWithoutAKnownFormat) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithTargets("<target><cell position=\"1,1,0\"/></target>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target><cell position=\"1,1,0\"/></target>\n")),
             "scene.xml:7: target has no format attribute; expected grid or csg");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithTargets("<target format=\"mesh\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target format=\"mesh\"/>\n")),
             "scene.xml:7: target format \"mesh\" must be grid or csg");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithTargets("<target format=\"relativeGrid\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target format=\"relativeGrid\"/>\n")),
             "scene.xml:7: target format \"relativeGrid\" is not supported (VisibleSim's relative "
             "grid); expected grid or csg");
-  EXPECT_EQ(
-      datomsim::testing::xmlSceneError(xmlWithTargets("<target format=\"grid\" color=\"1,2\"/>\n")),
-      "scene.xml:7: target color \"1,2\" must be three integers 0..255 r,g,b");
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target format=\"grid\" color=\"1,2\"/>\n")),
+            "scene.xml:7: target color \"1,2\" must be three integers 0..255 r,g,b");
 }
 
 TEST(VisibleSimXmlTargets, RefusesBadGridCellsNamingTheirLine) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithTargets("<target format=\"grid\">\n<cell position=\"1,2\"/>\n"
-                               "</target>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target format=\"grid\">\n<cell position=\"1,2\"/>\n"
+                                         "</target>\n")),
             "scene.xml:8: cell position \"1,2\" must be three integers x,y,z");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithTargets("<target format=\"grid\">\n<cell/>\n</target>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target format=\"grid\">\n<cell/>\n</target>\n")),
             "scene.xml:8: cell has no position attribute");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithTargets(
+  EXPECT_EQ(xmlSceneError(xmlWithTargets(
                 "<target format=\"grid\">\n<cell position=\"1,1,0\" color=\"0,0,256\"/>\n"
                 "</target>\n")),
             "scene.xml:8: cell color \"0,0,256\" must be three integers 0..255 r,g,b");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithTargets("<target format=\"grid\">\n<cell position=\"1,1,0\"/>\n"
-                               "<cell position=\" 1, 1, 0\"/>\n</target>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target format=\"grid\">\n<cell position=\"1,1,0\"/>\n"
+                                         "<cell position=\" 1, 1, 0\"/>\n</target>\n")),
             "scene.xml:9: cell position \" 1, 1, 0\" is already in this target, on line 8");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithTargets("<target format=\"grid\">\n"
-                               "<targetLine line=\"0\" plane=\"0\" values=\"0110\"/>\n"
-                               "</target>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target format=\"grid\">\n"
+                                         "<targetLine line=\"0\" plane=\"0\" values=\"0110\"/>\n"
+                                         "</target>\n")),
             "scene.xml:8: <targetLine> is not supported; list the cells as <cell "
             "position=\"x,y,z\"/>");
 }
@@ -157,12 +153,12 @@ TEST(VisibleSimXmlTargets, RefusesGridCellsBelowTheGroundBeyondTheRangeOrOutside
         "<target format=\"grid\">\n<cell position=\"1,1,0\"/>\n<cell position=\"" + position +
         "\"/>\n</target>\n");
   };
-  EXPECT_EQ(datomsim::testing::xmlSceneError(withCell("1,1,-3")),
+  EXPECT_EQ(xmlSceneError(withCell("1,1,-3")),
             "scene.xml:9: cell position \"1,1,-3\" is below the ground (z < 0)");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(withCell("5000000,1,0")),
+  EXPECT_EQ(xmlSceneError(withCell("5000000,1,0")),
             "scene.xml:9: cell position \"5000000,1,0\" is outside the supported coordinate "
             "range (-1048576 to 1048575)");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(withCell("11,1,0")),
+  EXPECT_EQ(xmlSceneError(withCell("11,1,0")),
             "scene.xml:9: cell position \"11,1,0\" is outside the grid 11,11,11");
 }
 
@@ -172,12 +168,11 @@ TEST(VisibleSimXmlTargets, RefusesCsgCellsBelowTheGroundOrBeyondTheRange) {
   const auto withCsg = [](const std::string& attributes) {
     return xmlWithTargets("<target format=\"csg\">\n<csg " + attributes + "/>\n</target>\n");
   };
-  EXPECT_EQ(
-      datomsim::testing::xmlSceneError(withCsg("content=\"sphere(2);\" boundingBox=\"false\"")),
-      "scene.xml:8: csg content \"sphere(2);\" holds cell 1,1,-3, which is below the "
-      "ground (z < 0): no module could fill it");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(withCsg("content=\"sphere(1);\" boundingBox=\"false\" "
-                                                     "translate=\"-5000000,0,3\"")),
+  EXPECT_EQ(xmlSceneError(withCsg("content=\"sphere(2);\" boundingBox=\"false\"")),
+            "scene.xml:8: csg content \"sphere(2);\" holds cell 1,1,-3, which is below the "
+            "ground (z < 0): no module could fill it");
+  EXPECT_EQ(xmlSceneError(withCsg("content=\"sphere(1);\" boundingBox=\"false\" "
+                                  "translate=\"-5000000,0,3\"")),
             "scene.xml:8: csg content \"sphere(1);\" holds cell -5000002,-2,3, which is outside "
             "the supported coordinate range (-1048576 to 1048575): no module could fill it");
   // Beyond the grid 11,11,11 is clipped, not refused.
@@ -187,31 +182,29 @@ TEST(VisibleSimXmlTargets, RefusesCsgCellsBelowTheGroundOrBeyondTheRange) {
 }
 
 TEST(VisibleSimXmlTargets, RefusesBadCsgTargetsNamingTheirLineAndValue) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithTargets("<target format=\"csg\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target format=\"csg\"/>\n")),
             "scene.xml:7: target of format csg has no <csg> element");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithTargets("<target format=\"csg\">\n<csg/>\n</target>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target format=\"csg\">\n<csg/>\n</target>\n")),
             "scene.xml:8: csg has no content attribute");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithTargets(
+  EXPECT_EQ(xmlSceneError(xmlWithTargets(
                 "<target format=\"csg\">\n<csg content=\"translate(1,2,3) sphere(1);\"/>\n"
                 "</target>\n")),
             "scene.xml:8: csg content \"translate(1,2,3) sphere(1);\" does not parse: csg:1:11: "
             "expected \"[\" after translate(, got \"1\"");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithTargets(
+  EXPECT_EQ(xmlSceneError(xmlWithTargets(
                 "<target format=\"csg\">\n<csg content=\"sphere(1);\" boundingBox=\"yes\"/>\n"
                 "</target>\n")),
             "scene.xml:8: csg boundingBox \"yes\" must be true or false");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithTargets(
+  EXPECT_EQ(xmlSceneError(xmlWithTargets(
                 "<target format=\"csg\">\n<csg content=\"sphere(1);\" translate=\"1,2\"/>\n"
                 "</target>\n")),
             "scene.xml:8: csg translate \"1,2\" must be three numbers x,y,z");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithTargets("<target format=\"csg\">\n<csg content=\"sphere(1);\"/>\n"
-                               "<csg content=\"sphere(2);\"/>\n</target>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithTargets("<target format=\"csg\">\n<csg content=\"sphere(1);\"/>\n"
+                                         "<csg content=\"sphere(2);\"/>\n</target>\n")),
             "scene.xml:9: a second <csg> in one target (the first is on line 8); only one is "
             "supported");
   // A long text is cut in the message; the parser's position still finds the fault.
-  const std::string error = datomsim::testing::xmlSceneError(xmlWithTargets(
+  const std::string error = xmlSceneError(xmlWithTargets(
       "<target format=\"csg\">\n<csg content=\"union() { cube([1,1,1]); cube([2,2,2]); "
       "cube([3,3,3]); torus(1,2); }\"/>\n</target>\n"));
   EXPECT_EQ(error,
@@ -223,7 +216,7 @@ TEST(VisibleSimXmlTargets, RefusesBadCsgTargetsNamingTheirLineAndValue) {
 TEST(VisibleSimXmlTargets, RefusesASecondTargetList) {
   const std::string text =
       "<world>\n<blockList/>\n<targetList/>\n<targetList>\n</targetList>\n</world>\n";
-  EXPECT_EQ(datomsim::testing::xmlSceneError(text),
+  EXPECT_EQ(xmlSceneError(text),
             "scene.xml:4: a second <targetList> (the first is on line 3); only one is supported");
 }
 

@@ -13,6 +13,8 @@
 namespace datomsim::io {
 namespace {
 
+using datomsim::testing::xmlSceneError;
+
 using geometry::Cell;
 using testing::sameScene;
 
@@ -120,21 +122,19 @@ TEST(VisibleSimXml, ReadsAWorldWithoutGridSizeAsUnbounded) {
 
 // The issue's acceptance test.
 TEST(VisibleSimXml, RefusesAPositionWithTwoNumbersNamingTheLine) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithBlocks("<block position=\"1,2\" color=\"1,2,3\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,2\" color=\"1,2,3\"/>\n")),
             "scene.xml:4: block position \"1,2\" must be three integers x,y,z");
 }
 
 TEST(VisibleSimXml, RefusesMalformedXmlNamingTheLine) {
   // The position's closing quote is missing on line 4.
   const std::string error =
-      datomsim::testing::xmlSceneError(xmlWithBlocks("<block position=\"1,2 color=\"1,2,3\"/>\n"));
+      xmlSceneError(xmlWithBlocks("<block position=\"1,2 color=\"1,2,3\"/>\n"));
   EXPECT_EQ(error.rfind("scene.xml:4: malformed XML: ", 0), 0u) << error;
 }
 
 TEST(VisibleSimXml, RefusesAMismatchedEndTag) {
-  const std::string error =
-      datomsim::testing::xmlSceneError("<world>\n<blockList>\n</blockLis>\n</world>\n");
+  const std::string error = xmlSceneError("<world>\n<blockList>\n</blockLis>\n</world>\n");
   EXPECT_NE(error.find("malformed XML"), std::string::npos) << error;
   EXPECT_NE(error.find("XML_ERROR_MISMATCHED_ELEMENT"), std::string::npos) << error;
 }
@@ -161,21 +161,20 @@ TEST(VisibleSimXml, AttributeValuesWithCharacterReferencesReadBackAsWritten) {
 }
 
 TEST(VisibleSimXml, RefusesASecondRootElement) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("") +
-                                             "<world gridSize=\"3,3,3\"><blockList/></world>\n"),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("") + "<world gridSize=\"3,3,3\"><blockList/></world>\n"),
             "scene.xml:6: a second root element <world> after <world> (line 2); a document "
             "has one");
 }
 
 TEST(VisibleSimXml, RefusesBytesThatAreNotUtf8NamingTheLine) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<!-- caf\xE9 -->\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<!-- caf\xE9 -->\n")),
             "scene.xml:4: malformed XML: byte 0xE9 starts no UTF-8 character XML allows (a file "
             "in Latin-1 or another encoding must be converted to UTF-8)");
   // In an attribute value, an overlong form, a surrogate, a sequence cut short, U+FFFE.
   for (const std::string bytes :
        {"\xE9t\xE9", "\xC0\xAF", "\xED\xA0\x80", "\xE2\x82", "\xEF\xBF\xBE"}) {
-    const std::string error = datomsim::testing::xmlSceneError(
-        xmlWithBlocks("<block position=\"1,1,0\" name=\"" + bytes + "\"/>\n"));
+    const std::string error =
+        xmlSceneError(xmlWithBlocks("<block position=\"1,1,0\" name=\"" + bytes + "\"/>\n"));
     EXPECT_EQ(error.rfind("scene.xml:4: malformed XML: byte 0x", 0), 0u) << error;
   }
   // Well-formed UTF-8 of two, three and four bytes reads.
@@ -189,7 +188,7 @@ TEST(VisibleSimXml, RefusesBytesThatAreNotUtf8NamingTheLine) {
 
 TEST(VisibleSimXml, RefusesANulByteAndWhatFollowsIt) {
   const std::string text = xmlWithBlocks("<block position=\"1,1,0\"/>\n");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(text + std::string(1, '\0') + "<garbage"),
+  EXPECT_EQ(xmlSceneError(text + std::string(1, '\0') + "<garbage"),
             "scene.xml:7: malformed XML: control character U+0000 is not allowed");
 }
 
@@ -200,7 +199,7 @@ TEST(VisibleSimXml, RefusesAnElementOfTooManyAttributesBeforeParsingIt) {
   for (size_t i = 0; i < 150000; ++i) attributes += " a" + std::to_string(i) + "=\"1\"";
   std::string text = xmlWithBlocks("");
   text.insert(text.find("<world ") + 6, attributes);
-  EXPECT_EQ(datomsim::testing::xmlSceneError(text),
+  EXPECT_EQ(xmlSceneError(text),
             "scene.xml:2: malformed XML: an element with more than 100 "
             "attributes (docs/limits.md)");
   // Up to the limit it reads, whatever '=' and '>' its quoted values hold.
@@ -212,37 +211,35 @@ TEST(VisibleSimXml, RefusesAnElementOfTooManyAttributesBeforeParsingIt) {
 }
 
 TEST(VisibleSimXml, RefusesAnEmptyDocument) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(""),
+  EXPECT_EQ(xmlSceneError(""),
             "scene.xml: malformed XML: the document is empty "
             "(XML_ERROR_EMPTY_DOCUMENT)");
 }
 
 TEST(VisibleSimXml, RefusesAMissingWorldOrBlockList) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError("<?xml version=\"1.0\"?>\n<scene/>\n"),
+  EXPECT_EQ(xmlSceneError("<?xml version=\"1.0\"?>\n<scene/>\n"),
             "scene.xml:2: the root element is <scene>, expected <world>");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                "<?xml version=\"1.0\"?>\n<world gridSize=\"3,3,3\">\n</world>\n"),
+  EXPECT_EQ(xmlSceneError("<?xml version=\"1.0\"?>\n<world gridSize=\"3,3,3\">\n</world>\n"),
             "scene.xml:2: <world> has no <blockList>");
 }
 
 TEST(VisibleSimXml, RefusesASecondBlockList) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError("<world>\n<blockList/>\n<blockList/>\n</world>"),
+  EXPECT_EQ(xmlSceneError("<world>\n<blockList/>\n<blockList/>\n</world>"),
             "scene.xml:3: a second <blockList> (the first is on line 2); only one is supported");
 }
 
 TEST(VisibleSimXml, RefusesBadNumbers) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<block position=\"1,x,0\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,x,0\"/>\n")),
             "scene.xml:4: block position \"1,x,0\" must be three integers x,y,z");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<block position=\"1,2,0,4\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,2,0,4\"/>\n")),
             "scene.xml:4: block position \"1,2,0,4\" must be three integers x,y,z");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<block position=\"1.5,2,0\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1.5,2,0\"/>\n")),
             "scene.xml:4: block position \"1.5,2,0\" must be three integers x,y,z");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<block position=\"\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"\"/>\n")),
             "scene.xml:4: block position \"\" must be three integers x,y,z");
-  EXPECT_EQ(
-      datomsim::testing::xmlSceneError(xmlWithBlocks("<block position=\"99999999999,0,0\"/>\n")),
-      "scene.xml:4: block position \"99999999999,0,0\" must be three integers x,y,z");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<block color=\"1,2,3\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"99999999999,0,0\"/>\n")),
+            "scene.xml:4: block position \"99999999999,0,0\" must be three integers x,y,z");
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block color=\"1,2,3\"/>\n")),
             "scene.xml:4: block has no position attribute");
 }
 
@@ -254,63 +251,55 @@ TEST(VisibleSimXml, AcceptsSpacesAndPlusSignsInNumberLists) {
 }
 
 TEST(VisibleSimXml, RefusesColourComponentsOutside0To255) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithBlocks("<block position=\"1,1,0\" color=\"256,0,0\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,1,0\" color=\"256,0,0\"/>\n")),
             "scene.xml:4: block color \"256,0,0\" must be three integers 0..255 r,g,b");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithBlocks("<block position=\"1,1,0\" color=\"-1,0,0\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,1,0\" color=\"-1,0,0\"/>\n")),
             "scene.xml:4: block color \"-1,0,0\" must be three integers 0..255 r,g,b");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithBlocks("<block position=\"1,1,0\"/>\n", " color=\"red\"")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,1,0\"/>\n", " color=\"red\"")),
             "scene.xml:3: blockList color \"red\" must be three integers 0..255 r,g,b");
 }
 
 TEST(VisibleSimXml, RefusesOrientationsOutside0To23) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithBlocks("<block position=\"1,1,0\" orientation=\"24\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,1,0\" orientation=\"24\"/>\n")),
             "scene.xml:4: block orientation \"24\" must be an integer 0..23");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithBlocks("<block position=\"1,1,0\" orientation=\"-1\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,1,0\" orientation=\"-1\"/>\n")),
             "scene.xml:4: block orientation \"-1\" must be an integer 0..23");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(
-                xmlWithBlocks("<block position=\"1,1,0\" orientation=\"2,3\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,1,0\" orientation=\"2,3\"/>\n")),
             "scene.xml:4: block orientation \"2,3\" must be an integer 0..23");
 }
 
 TEST(VisibleSimXml, RefusesBadGridAndBlockSizes) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError("<world gridSize=\"11,0,11\"><blockList/></world>"),
+  EXPECT_EQ(xmlSceneError("<world gridSize=\"11,0,11\"><blockList/></world>"),
             "scene.xml:1: world gridSize \"11,0,11\" must be three positive integers X,Y,Z");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("", " blockSize=\"10,10\"")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("", " blockSize=\"10,10\"")),
             "scene.xml:3: blockList blockSize \"10,10\" must be three positive numbers");
-  EXPECT_EQ(
-      datomsim::testing::xmlSceneError(xmlWithBlocks("<block id=\"0\" position=\"1,1,0\"/>\n")),
-      "scene.xml:4: block id \"0\" must be an integer 1..4294967295");
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block id=\"0\" position=\"1,1,0\"/>\n")),
+            "scene.xml:4: block id \"0\" must be an integer 1..4294967295");
 }
 
 TEST(VisibleSimXml, RefusesModulesOutsideTheGridOrBelowTheGround) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<block position=\"11,0,0\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"11,0,0\"/>\n")),
             "scene.xml:4: block position \"11,0,0\" is outside the grid 11,11,11");
   // At z = 2 the layer is shifted by one cell: x = 10 is grid column 11.
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<block position=\"10,0,2\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"10,0,2\"/>\n")),
             "scene.xml:4: block position \"10,0,2\" is outside the grid 11,11,11");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<block position=\"1,1,-1\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,1,-1\"/>\n")),
             "scene.xml:4: block position \"1,1,-1\" is below the ground (z < 0)");
 }
 
 TEST(VisibleSimXml, RefusesTwoModulesInOneCellNamingBothLines) {
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<block position=\"1,1,0\"/>\n"
-                                                           "<block position=\"2,1,0\"/>\n"
-                                                           "<block position=\"1,1,0\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block position=\"1,1,0\"/>\n"
+                                        "<block position=\"2,1,0\"/>\n"
+                                        "<block position=\"1,1,0\"/>\n")),
             "scene.xml:6: block position \"1,1,0\" is already occupied by the block on line 4");
 }
 
 TEST(VisibleSimXml, RefusesADuplicateIdNamingBothLines) {
-  EXPECT_EQ(
-      datomsim::testing::xmlSceneError(xmlWithBlocks("<block id=\"5\" position=\"1,1,0\"/>\n"
-                                                     "<block id=\"5\" position=\"2,1,0\"/>\n")),
-      "scene.xml:5: block id \"5\" is already used by the block on line 4");
-  EXPECT_EQ(datomsim::testing::xmlSceneError(xmlWithBlocks("<block id=\"2\" position=\"1,1,0\"/>\n"
-                                                           "<block position=\"2,1,0\"/>\n")),
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block id=\"5\" position=\"1,1,0\"/>\n"
+                                        "<block id=\"5\" position=\"2,1,0\"/>\n")),
+            "scene.xml:5: block id \"5\" is already used by the block on line 4");
+  EXPECT_EQ(xmlSceneError(xmlWithBlocks("<block id=\"2\" position=\"1,1,0\"/>\n"
+                                        "<block position=\"2,1,0\"/>\n")),
             "scene.xml:5: block gets id 2 from its place in the file, already used by the block on "
             "line 4; give it an id attribute");
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the fuzz harnesses (fuzz/) with Clang's libFuzzer, AddressSanitizer and
 # UndefinedBehaviorSanitizer, in the sanitized build (scripts/build.sh sanitize), and runs each
-# for SECONDS (default 30) from its corpus in fuzz/corpus (copied: new inputs stay in build/fuzz).
+# for SECONDS (default 30), as many at once as there are cores, from its corpus in fuzz/corpus
+# (copied: new inputs stay in build/fuzz).
 # A crash, a sanitizer report or a broken property stops the script with the input that caused it
 # (build/fuzz/crashes/). Then (or when FUZZER is "python") hypothesis over the Python package's
 # public functions, python/tests/test_fuzz.py, with DATOMSIM_FUZZ_EXAMPLES examples each (default
@@ -49,17 +50,34 @@ fi
 scripts/build.sh sanitize "${fuzzers[@]}"
 
 mkdir -p build/fuzz/crashes
-for fuzzer in "${fuzzers[@]}"; do
-  corpus="build/fuzz/corpus/${fuzzer%_fuzzer}"
+# One fuzzer runs on one core: as many run at once as there are cores (each its SECONDS), and
+# their results are told in the order given.
+fuzz_one() {
+  local fuzzer="$1" corpus="build/fuzz/corpus/${1%_fuzzer}"
   mkdir -p "$corpus"
   cp -n "fuzz/corpus/${fuzzer%_fuzzer}"/* "$corpus"/ 2> /dev/null || true
   # One process, no leak reports from the tools' own caches; a crash leaves its input.
-  if ! "build/sanitize/fuzz/$fuzzer" -max_total_time="$seconds" -print_final_stats=1 \
+  if "build/sanitize/fuzz/$fuzzer" -max_total_time="$seconds" -print_final_stats=1 \
     -artifact_prefix="build/fuzz/crashes/$fuzzer-" "$corpus" > "build/fuzz/$fuzzer.log" 2>&1; then
+    echo 0 > "build/fuzz/$fuzzer.status"
+  else
+    echo 1 > "build/fuzz/$fuzzer.status"
+  fi
+}
+cores="$(nproc)"
+for fuzzer in "${fuzzers[@]}"; do
+  rm -f "build/fuzz/$fuzzer.status"
+  while (($(jobs -rp | wc -l) >= cores)); do wait -n || true; done
+  fuzz_one "$fuzzer" &
+done
+wait
+for fuzzer in "${fuzzers[@]}"; do
+  if [[ "$(cat "build/fuzz/$fuzzer.status" 2> /dev/null)" != 0 ]]; then
     tail -40 "build/fuzz/$fuzzer.log" >&2
     echo "fuzz.sh: $fuzzer failed; the input is in build/fuzz/crashes/" >&2
     exit 1
   fi
+  corpus="build/fuzz/corpus/${fuzzer%_fuzzer}"
   runs=$(grep -o "stat::number_of_executed_units: *[0-9]*" "build/fuzz/$fuzzer.log" | grep -o "[0-9]*$")
   echo "$fuzzer: $runs runs in ${seconds} s, no crash ($(ls "$corpus" | wc -l) inputs in its corpus)"
 done

@@ -26,14 +26,17 @@ export function commonOptions() {
 let passed = 0;
 let failed = 0;
 
+// Each line gives the check's time, to show where an end-to-end run's minutes go.
 export async function check(name, body) {
+  const started = performance.now();
+  const took = () => `(${((performance.now() - started) / 1000).toFixed(1)} s)`;
   try {
     await body();
     ++passed;
-    console.log(`ok - ${name}`);
+    console.log(`ok - ${name} ${took()}`);
   } catch (error) {
     ++failed;
-    console.log(`not ok - ${name}\n  ${String(error.stack || error).split('\n').join('\n  ')}`);
+    console.log(`not ok - ${name} ${took()}\n  ${String(error.stack || error).split('\n').join('\n  ')}`);
   }
 }
 

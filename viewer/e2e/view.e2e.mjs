@@ -25,7 +25,7 @@ import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'no
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { launchBrowser } from './browser.mjs';
+import { VIEWPORT, launchBrowser } from './browser.mjs';
 import { assert, check, commonOptions, finish, repository } from './harness.mjs';
 
 const GOAL = [6, 5, 2];
@@ -347,7 +347,7 @@ async function testPage(context, spec) {
           assert(hidden.length === 0, `at ${width}x${height} the captions cover modules ${hidden.join(', ')}`);
         }
         await shoot(page, `${name}-top-captions`);
-        await page.setViewportSize({ width: 1280, height: 800 });
+        await page.setViewportSize(VIEWPORT);
         await page.evaluate(`${api}.fit()`);
       });
 
@@ -563,7 +563,7 @@ async function testWalkers(page, spec) {
     assert(Math.abs(t - duration * 0.25) < duration / box.width + 1e-6, `seeked to ${t}, expected ${duration * 0.25}`);
     await page.evaluate(`${api}.seek(${busy})`);
     await settle(page);
-    await page.screenshot({ path: join(shots, `${name}-strip.png`), clip: { x: 0, y: 800 - BAR - 40, width: 1280, height: BAR + 40 } });
+    await page.screenshot({ path: join(shots, `${name}-strip.png`), clip: { x: 0, y: VIEWPORT.height - BAR - 40, width: VIEWPORT.width, height: BAR + 40 } });
   });
 }
 

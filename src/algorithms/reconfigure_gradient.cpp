@@ -27,10 +27,9 @@ bool ReconfigureProgram::isOpen(Context& context, const Cell& cell) const {
     if (!filled && target_->contains(under)) return false;
   }
   if (!supported) return false;
-  // From the inside out: the layer's neighbours nearer its centre first (directions 0, 1, 6, 7
-  // stay on the layer).
+  // From the inside out: the layer's neighbours nearer its centre first.
   const double rank = target_->rank(cell);
-  for (const int side : {0, 1, 6, 7}) {
+  for (const int side : geometry::kSameLayerDirections) {
     const Cell next = cell + geometry::neighbourOffset(side);
     if (next == context.cell() || !target_->contains(next) || target_->rank(next) >= rank) {
       continue;

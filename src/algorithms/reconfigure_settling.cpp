@@ -22,10 +22,7 @@ void ReconfigureProgram::confirm(Context& context) {
     const Cell next = here + geometry::neighbourOffset(d);
     if (!target_->contains(next)) continue;
     const bool below = d >= 8;
-    const bool inward =
-        std::find(geometry::kSameLayerDirections.begin(), geometry::kSameLayerDirections.end(),
-                  d) != geometry::kSameLayerDirections.end() &&
-        target_->rank(next) < rank;
+    const bool inward = geometry::neighbourOffset(d).z == 0 && target_->rank(next) < rank;
     if (!below && !inward) continue;
     // Empty again (its module left): not open any more.
     if (!context.occupied(next).value_or(false)) return retryLater(context);

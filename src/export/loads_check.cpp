@@ -21,6 +21,7 @@ namespace {
 
 using Json = nlohmann::json;
 
+using detail::isFiniteNumber;
 using detail::isInteger;
 
 // The trace's first line, its header (the trace was checked: a header is one line, as
@@ -31,8 +32,8 @@ Json headerOf(const std::string& trace) {
 }
 
 double length(const Json& v) {
-  if (!v.is_array() || v.size() != 3 || !detail::isFiniteNumber(v[0]) ||
-      !detail::isFiniteNumber(v[1]) || !detail::isFiniteNumber(v[2])) {
+  if (!v.is_array() || v.size() != 3 || !isFiniteNumber(v[0]) || !isFiniteNumber(v[1]) ||
+      !isFiniteNumber(v[2])) {
     return NAN;
   }
   return std::hypot(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
@@ -53,8 +54,7 @@ Result<std::string> checkLoads(const std::string& text, const std::string& name,
   if (parameters == loads.end() || !parameters->is_object()) return notLoads("no \"parameters\"");
   for (const char* key : {"latch_force_n", "latch_moment_n_m", "radius_m"}) {
     const auto value = parameters->find(key);
-    if (value == parameters->end() || !detail::isFiniteNumber(*value) ||
-        !(value->get<double>() > 0)) {
+    if (value == parameters->end() || !isFiniteNumber(*value) || !(value->get<double>() > 0)) {
       return notLoads(fmt::format("\"parameters.{}\" is not a positive number", key));
     }
   }
@@ -155,7 +155,7 @@ Result<std::string> checkLoads(const std::string& text, const std::string& name,
       return notLoads(where + " has no \"force_n\" or \"moment_n_m\" vector");
     }
     const Json safety = latch.value("safety", Json());
-    if (!safety.is_null() && !(detail::isFiniteNumber(safety) && safety.get<double>() >= 0)) {
+    if (!safety.is_null() && !(isFiniteNumber(safety) && safety.get<double>() >= 0)) {
       return notLoads(where + "'s \"safety\" is neither a number >= 0 nor null");
     }
     if (!safety.is_null() && safety.get<double>() < 1) ++overloaded;

@@ -66,10 +66,10 @@ inline constexpr std::array<std::array<int, 3>, kAxisCount> kAxisInCubeFrame = {
 
 }  // namespace detail
 
-// Offset of the neighbour cell in direction d (docs/conventions.md, section 1 table).
 // The four directions that stay on a cell's layer (z unchanged).
 inline constexpr std::array<int, 4> kSameLayerDirections = {0, 1, 6, 7};
 
+// Offset of the neighbour cell in direction d (docs/conventions.md, section 1 table).
 constexpr Cell neighbourOffset(int direction) {
   return detail::kNeighbourOffsets[direction];
 }

@@ -44,6 +44,7 @@ void addReach(CLI::App& app, const Reporter& reporter) {
     PictureRequest pictures;
     RuleArguments rules;
     ModuleArguments module;
+    int threads = 0;
   };
   auto args = std::make_shared<Arguments>();
   CLI::App* command = app.add_subcommand(
@@ -56,6 +57,11 @@ void addReach(CLI::App& app, const Reporter& reporter) {
                       "the module there, else the one at the goal (as for run)");
   addRuleOptions(*command, args->rules);
   args->module.addTo(*command);
+  command
+      ->add_option("--threads", args->threads,
+                   "Threads the distances are searched on, frontier by frontier (default: every "
+                   "core; the map is the same for any number)")
+      ->check(kPositiveInteger);
   addOutputOption(*command, args->out);
   PictureRequest& asked = args->pictures;
   command->add_option("--png", asked.png, "Write the distance map as a PNG picture");
@@ -92,7 +98,7 @@ void addReach(CLI::App& app, const Reporter& reporter) {
         args->start.empty() ? std::nullopt : std::optional(parseCell("--start", args->start));
     io::Scene scene = unwrap(io::readScene(args->scene));
     const MotionChoice model = args->module.modelFor(scene, args->rules);
-    const ReachOutput reached = reachOnScene(std::move(scene), goal, start, model);
+    const ReachOutput reached = reachOnScene(std::move(scene), goal, start, model, args->threads);
     const std::string title = fmt::format("{}: distances to {} ({})", args->scene,
                                           geometry::toString(goal), describe(model));
     writePictures(reached.fixed, reached.mobileTakenOut, reached.map, reached.path, title, pictures,

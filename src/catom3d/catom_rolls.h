@@ -47,9 +47,9 @@ class CatomRolls final : public motion::MotionModel {
   // The map counts rolls *to* the goal and is built backwards from it (forEachCellOneMotionAway),
   // which is right whether or not the rolls are bidirectional: VisibleSim's own rules are not
   // (docs/catom3d.md). Its options are the Datom's defaults: they do not apply to rolls.
-  Result<motion::DistanceMap> reach(const world::World& fixedWorld,
-                                    const geometry::Cell& goal) const override {
-    return motion::reachOver(*this, fixedWorld, goal);
+  Result<motion::DistanceMap> reach(const world::World& fixedWorld, const geometry::Cell& goal,
+                                    int threads) const override {
+    return motion::reachOver(*this, fixedWorld, goal, threads);
   }
   Result<std::vector<motion::Motion>> followGradient(const world::World& fixedWorld,
                                                      const motion::DistanceMap& distances,

@@ -8,6 +8,7 @@
 #include "frontend/usage_error.h"
 #include "geometry/lattice.h"
 #include "motion/rule_table.h"
+#include "motion/worker_pool.h"
 
 namespace datomsim::frontend {
 
@@ -19,7 +20,8 @@ ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
 }
 
 ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
-                         const std::optional<geometry::Cell>& start, const MotionChoice& model) {
+                         const std::optional<geometry::Cell>& start, const MotionChoice& model,
+                         int threads) {
   // The mobile, chosen as `run` chooses it, is not part of the fixed world.
   const experiment::MobileChoice mobile =
       unwrap(experiment::chooseMobile(scene.world, goal, start));
@@ -37,7 +39,7 @@ ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
   }
   const motion::RuleTable table;
   const auto motions = modelOf(model, table);
-  motion::DistanceMap map = unwrap(motions->reach(scene.world, goal));
+  motion::DistanceMap map = unwrap(motions->reach(scene.world, goal, motion::threadsFor(threads)));
   std::vector<geometry::Cell> path;
   if (start) {
     path.push_back(*start);

@@ -25,7 +25,9 @@ struct ReachOutput {
 ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
                          const std::optional<geometry::Cell>& start,
                          const motion::RuleOptions& options);
+// `threads`: the threads the distances are searched on (motion/model_search.h; 0: every core).
 ReachOutput reachOnScene(io::Scene scene, const geometry::Cell& goal,
-                         const std::optional<geometry::Cell>& start, const MotionChoice& model);
+                         const std::optional<geometry::Cell>& start, const MotionChoice& model,
+                         int threads = 1);
 
 }  // namespace datomsim::frontend

@@ -45,9 +45,9 @@ class DatomRules final : public MotionModel {
   std::vector<int> pivotLetsGo(int rule) const override;
   int mobileDirection(int rule) const override { return table_.rule(rule).mobileDirection; }
 
-  Result<DistanceMap> reach(const world::World& fixedWorld,
-                            const geometry::Cell& goal) const override {
-    return reachOver(*this, fixedWorld, goal);
+  Result<DistanceMap> reach(const world::World& fixedWorld, const geometry::Cell& goal,
+                            int threads) const override {
+    return reachOver(*this, fixedWorld, goal, threads);
   }
   Result<std::vector<Motion>> followGradient(const world::World& fixedWorld,
                                              const DistanceMap& distances,

@@ -14,6 +14,9 @@
 //   - `static constexpr GradientWords kGradientWords`: the words of its errors.
 #pragma once
 
+#include <algorithm>
+#include <atomic>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -26,6 +29,7 @@
 #include "geometry/lattice.h"
 #include "motion/motion_model.h"
 #include "motion/reach.h"
+#include "motion/worker_pool.h"
 #include "world/world.h"
 
 namespace datomsim::motion {
@@ -37,9 +41,55 @@ struct GradientWords {
   std::string_view noStepBecause;  // why no motion lowering the distance is a bug
 };
 
+// A frontier of fewer cells is searched on one thread: waking the workers would cost more than
+// they save (a cell's rules take about a microsecond).
+inline constexpr size_t kParallelFrontier = 256;
+
+// What the workers of a parallel reach share: for each slot of the map's index, the first cell of
+// the frontier (by its place in the map) found to lead there, UINT32_MAX for none. It lets a
+// worker skip the rules to a cell that an earlier cell of the frontier leads to, as one thread
+// skips a cell it has recorded.
+class FrontierClaims {
+ public:
+  static constexpr uint32_t kNone = UINT32_MAX;
+  // Room for the map's slots as they are now, every slot unclaimed.
+  void fit(const world::Occupancy& index) {
+    if (index.slotCount() == size_) return;
+    size_ = index.slotCount();
+    claims_ = std::make_unique<std::atomic<uint32_t>[]>(size_);
+    for (size_t k = 0; k < size_; ++k) claims_[k].store(kNone, std::memory_order_relaxed);
+  }
+  // Whether a cell of the frontier at or before `source` leads to the slot (-1: outside the box).
+  bool claimedBy(int64_t slot, uint32_t source) const {
+    return slot >= 0 && claims_[size_t(slot)].load(std::memory_order_relaxed) <= source;
+  }
+  // `source` leads to the slot: kept if earlier than any claim there.
+  void claim(int64_t slot, uint32_t source) {
+    if (slot < 0) return;
+    std::atomic<uint32_t>& at = claims_[size_t(slot)];
+    uint32_t held = at.load(std::memory_order_relaxed);
+    while (source < held && !at.compare_exchange_weak(held, source, std::memory_order_relaxed)) {
+    }
+  }
+  void release(int64_t slot) {
+    if (slot >= 0) claims_[size_t(slot)].store(kNone, std::memory_order_relaxed);
+  }
+
+ private:
+  size_t size_ = 0;
+  std::unique_ptr<std::atomic<uint32_t>[]> claims_;
+};
+
+// The map from `goal`, breadth first, frontier by frontier (the cells at one distance). With more
+// than one thread, a large frontier is cut into as many slices, in order. Each worker lists the
+// cells one motion away from its slice's and claims them (FrontierClaims, to skip the rules that
+// an earlier frontier cell has made useless); the lists are added to the map in the frontier's
+// order, each cell at its first listing, which comes from the earliest frontier cell that leads
+// there: the place one thread gives it. So the map is the one-thread map, cell for cell and in
+// the same order, whatever the number of threads.
 template <class Model>
 Result<DistanceMap> reachOver(const Model& model, const world::World& fixedWorld,
-                              const geometry::Cell& goal) {
+                              const geometry::Cell& goal, int threads = 1) {
   using geometry::toString;
   if (!fixedWorld.isInside(goal)) {
     return Error{"goal " + toString(goal) + " " + fixedWorld.bounds().whyOutside(goal)};
@@ -52,15 +102,63 @@ Result<DistanceMap> reachOver(const Model& model, const world::World& fixedWorld
   map.reserveAround(fixedWorld.occupancy());
   map.addNew(goal, 0);
   uint64_t evaluations = 0;
-  // Breadth first: the map's cells in order are the queue, in order of distance.
-  for (size_t next = 0; next < map.inOrder().size(); ++next) {
-    // Copies, not a structured binding: the map grows while the cell is read (its list may move),
-    // and Clang before 16 does not let a lambda capture a binding.
-    const geometry::Cell cell = map.inOrder()[next].first;
-    const int distance = map.inOrder()[next].second;
-    model.forEachCellOneMotionAway(
-        fixedWorld, cell, [&](const geometry::Cell& c) { return map.contains(c); },
-        [&](const geometry::Cell& c) { map.addNew(c, distance + 1); }, evaluations);
+  const auto known = [&](const geometry::Cell& c) { return map.contains(c); };
+  // Started at the first large frontier.
+  std::optional<WorkerPool> pool;
+  FrontierClaims claims;
+  std::vector<std::vector<geometry::Cell>> found(size_t(std::max(threads, 1)));
+  std::vector<uint64_t> judged(found.size());
+  for (size_t begin = 0; begin < map.inOrder().size();) {
+    const size_t end = map.inOrder().size();
+    const int distance = map.inOrder()[begin].second;
+    if (threads <= 1 || end - begin < kParallelFrontier) {
+      for (size_t next = begin; next < end; ++next) {
+        // A copy: the map grows while the cell is read (its list may move).
+        const geometry::Cell cell = map.inOrder()[next].first;
+        model.forEachCellOneMotionAway(
+            fixedWorld, cell, known, [&](const geometry::Cell& c) { map.addNew(c, distance + 1); },
+            evaluations);
+      }
+      begin = end;
+      continue;
+    }
+    if (!pool) pool.emplace(threads);
+    claims.fit(map.index());
+    // The map is only read while the workers run.
+    pool->run([&](int worker) {
+      const size_t size = end - begin;
+      const size_t from = begin + size * size_t(worker) / size_t(threads);
+      const size_t to = begin + size * size_t(worker + 1) / size_t(threads);
+      std::vector<geometry::Cell>& cells = found[size_t(worker)];
+      cells.clear();
+      uint64_t count = 0;
+      for (size_t next = from; next < to; ++next) {
+        const uint32_t source = uint32_t(next);
+        model.forEachCellOneMotionAway(
+            fixedWorld, map.inOrder()[next].first,
+            [&](const geometry::Cell& c) {
+              return map.contains(c) || claims.claimedBy(map.index().slotOf(c), source);
+            },
+            [&](const geometry::Cell& c) {
+              cells.push_back(c);
+              claims.claim(map.index().slotOf(c), source);
+            },
+            count);
+      }
+      judged[size_t(worker)] = count;
+    });
+    // Each cell at its first listing: the lists run in the order of the frontier's cells, so
+    // that is the earliest cell that leads there. Then the claims cleared for the next frontier.
+    for (size_t worker = 0; worker < found.size(); ++worker) {
+      evaluations += judged[worker];
+      for (const geometry::Cell& c : found[worker]) claims.release(map.index().slotOf(c));
+    }
+    for (const std::vector<geometry::Cell>& cells : found) {
+      for (const geometry::Cell& c : cells) {
+        if (!map.contains(c)) map.addNew(c, distance + 1);
+      }
+    }
+    begin = end;
   }
   map.countEvaluations(evaluations);
   return map;

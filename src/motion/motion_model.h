@@ -78,10 +78,10 @@ class MotionModel {
   virtual int mobileDirection(int rule) const = 0;
 
   // The gradient of the paper's section VII: the number of motions from every cell that reaches
-  // `goal` over the fixed world (which must hold no module at the goal). Refuses a goal that is
-  // occupied or outside the world.
-  virtual Result<DistanceMap> reach(const world::World& fixedWorld,
-                                    const geometry::Cell& goal) const = 0;
+  // `goal` over the fixed world (which must hold no module at the goal), searched on `threads`
+  // threads (the same map for any number). Refuses a goal that is occupied or outside the world.
+  virtual Result<DistanceMap> reach(const world::World& fixedWorld, const geometry::Cell& goal,
+                                    int threads) const = 0;
   // The path from `start` down the map to its goal (paper, Algorithm 1): from each cell, the
   // valid motion to the cell of least distance, ties to the first in table order. Refuses a start
   // off the map.

@@ -22,8 +22,8 @@ std::vector<std::pair<Cell, int>> DistanceMap::sorted() const {
 }
 
 Result<DistanceMap> reach(const world::World& fixedWorld, const RuleTable& table, Cell goal,
-                          const RuleOptions& options) {
-  return DatomRules(table, options).reach(fixedWorld, goal);
+                          const RuleOptions& options, int threads) {
+  return DatomRules(table, options).reach(fixedWorld, goal, threads);
 }
 
 std::optional<world::Module> takeMobile(world::World& world, const Cell& cell) {

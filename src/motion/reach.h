@@ -41,6 +41,8 @@ class DistanceMap {
   }
   // The cells in the order they were recorded (breadth first).
   const std::vector<std::pair<geometry::Cell, int>>& inOrder() const { return cells_; }
+  // The index of the recorded cells (for its slots: motion/model_search.h).
+  const world::Occupancy& index() const { return index_; }
   void countEvaluations(uint64_t count) { ruleEvaluations_ += count; }
 
   // The distance of a cell, or nullopt when the mobile cannot reach the goal from it.
@@ -68,9 +70,10 @@ class DistanceMap {
 };
 
 // The Datom's gradient from `goal` over the fixed world (which must not hold a module at the
-// goal), as motion::DatomRules::reach. Refuses a goal that is occupied or outside the world.
+// goal), as motion::DatomRules::reach, on `threads` threads. Refuses a goal that is occupied or
+// outside the world.
 Result<DistanceMap> reach(const world::World& fixedWorld, const RuleTable& table,
-                          geometry::Cell goal, const RuleOptions& options);
+                          geometry::Cell goal, const RuleOptions& options, int threads = 1);
 
 // Removes the module at `cell`, if any, so that it can be the mobile: the paper puts the mobile
 // at G to compute the gradient. Returns the removed module.

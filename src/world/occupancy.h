@@ -94,6 +94,13 @@ class Occupancy {
 
   bool isSparse() const { return sparse_; }
   size_t memoryBytes() const;
+  // A cell's slot in the dense box, in [0, slotCount()), or -1 outside the box or when sparse: for
+  // a caller's own array beside the index (a parallel search's claims, motion/model_search.h).
+  // Inserting may regrow the box and renumber the slots.
+  int64_t slotOf(const geometry::Cell& cell) const { return sparse_ ? -1 : denseSlot(cell); }
+  size_t slotCount() const {
+    return sparse_ ? 0 : size_t(box_.nx) * size_t(box_.ny) * size_t(box_.nz);
+  }
 
  private:
   struct Box {

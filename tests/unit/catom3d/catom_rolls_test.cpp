@@ -95,7 +95,7 @@ TEST(MotionModels, ReachAndItsPathThroughTheInterface) {
   const Cell goal{3, 3, 2}, start{0, 0, 2};
   for (const auto kind : {world::ModuleKind::kDatom, world::ModuleKind::kCatom3D}) {
     const auto model = modelOf(kind);
-    const auto map = model->reach(world, goal);
+    const auto map = model->reach(world, goal, 1);
     ASSERT_TRUE(map.ok()) << map.error();
     if (kind == world::ModuleKind::kDatom) {
       EXPECT_EQ(map->sorted(), motion::reach(world, rules(), goal, {})->sorted());

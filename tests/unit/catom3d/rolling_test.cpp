@@ -240,7 +240,7 @@ TEST(RollBidirectionality, HoldsForTheSymmetricRulesOnRandomScenes) {
 TEST(RollReach, EveryCellOnTheMapHasARollOneStepCloser) {
   for (const RollRules rules : {RollRules::kSymmetric, RollRules::kVisibleSim}) {
     const world::World world = WorldBuilder().box({0, 0, 0}, {6, 6, 2}).build();
-    const auto map = CatomRolls(rules).reach(world, {2, 2, 2});
+    const auto map = CatomRolls(rules).reach(world, {2, 2, 2}, 1);
     ASSERT_TRUE(map.ok()) << map.error();
     EXPECT_EQ(map->distanceAt({2, 2, 2}), 0);
     EXPECT_GT(map->size(), 10u);
@@ -261,9 +261,10 @@ TEST(RollReach, EveryCellOnTheMapHasARollOneStepCloser) {
 
 TEST(RollReach, RefusesAnOccupiedGoalAndAStartOffTheMap) {
   const world::World world = WorldBuilder().box({0, 0, 0}, {3, 3, 1}).build();
-  EXPECT_NE(CatomRolls(RollRules::kSymmetric).reach(world, {1, 1, 0}).error().find("holds module"),
-            std::string::npos);
-  const auto map = CatomRolls(RollRules::kSymmetric).reach(world, {1, 1, 1});
+  EXPECT_NE(
+      CatomRolls(RollRules::kSymmetric).reach(world, {1, 1, 0}, 1).error().find("holds module"),
+      std::string::npos);
+  const auto map = CatomRolls(RollRules::kSymmetric).reach(world, {1, 1, 1}, 1);
   ASSERT_TRUE(map.ok());
   const auto path = CatomRolls(RollRules::kSymmetric).followGradient(world, *map, {9, 9, 9});
   ASSERT_FALSE(path.ok());

@@ -2,7 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "motion/bidirectionality.h"
+#include "motion/model_search.h"
 #include "scene/random_scene.h"
 #include "support/rule_table.h"
 #include "support/world_builder.h"
@@ -85,6 +92,44 @@ TEST(Bidirectionality, HoldsOnABoxForEveryOptionSet) {
       const auto report = checkBidirectionality(world, testing::paperRules(), {rules, attachment});
       EXPECT_GT(report.motionsChecked, 0u);
       EXPECT_TRUE(report.counterexamples.empty());
+    }
+  }
+}
+
+// The same map on any number of threads (motion/model_search.h), on worlds whose frontiers are
+// large enough to be cut among the threads: cell for cell, in the same order, with the same count
+// of rules judged.
+TEST(Reach, IsTheSameMapOnOneTwoAndFourThreads) {
+  std::vector<std::pair<std::string, world::World>> worlds;
+  worlds.emplace_back("box 160x160x2", WorldBuilder().box({0, 0, 0}, {160, 160, 2}).build());
+  for (const uint64_t seed : {3u, 8u}) {
+    scene::RandomOptions options;
+    options.maxHeight = 4;
+    options.gridSize = Cell{150, 150, 6};
+    auto world = scene::random(seed, 12'000, options);
+    ASSERT_TRUE(world.ok()) << world.error();
+    worlds.emplace_back("random seed " + std::to_string(seed), std::move(*world));
+  }
+  for (auto& [name, world] : worlds) {
+    // The goal: an empty cell over the middle of the top.
+    Cell goal{80, 80, 2};
+    if (name != "box 160x160x2") {
+      goal = {75, 75, 0};
+      while (world.moduleAt(goal) || !world.moduleAt(goal - Cell{0, 0, 1})) ++goal.z;
+    }
+    const auto one = reach(world, testing::paperRules(), goal, {}, 1);
+    ASSERT_TRUE(one.ok()) << name << ": " << one.error();
+    // A frontier larger than one thread keeps for itself: the threads do share the work.
+    std::map<int, size_t> perDistance;
+    for (const auto& [cell, distance] : one->inOrder()) ++perDistance[distance];
+    size_t largest = 0;
+    for (const auto& [distance, count] : perDistance) largest = std::max(largest, count);
+    EXPECT_GE(largest, kParallelFrontier) << name;
+    for (const int threads : {2, 4}) {
+      const auto many = reach(world, testing::paperRules(), goal, {}, threads);
+      ASSERT_TRUE(many.ok()) << name << ": " << many.error();
+      EXPECT_EQ(many->inOrder(), one->inOrder()) << name << ", " << threads << " threads";
+      EXPECT_EQ(many->ruleEvaluations(), one->ruleEvaluations()) << name;
     }
   }
 }

@@ -17,8 +17,7 @@ class WorkerPool {
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
 
-  int size() const { return int(workers_.size()) + 1; }
-  // Calls task(w) for every worker w in [0, size()) at once, and returns when every call has.
+  // Calls task(w) for every worker w in [0, threads) at once, and returns when every call has.
   // The task must not throw.
   void run(const std::function<void(int)>& task);
 

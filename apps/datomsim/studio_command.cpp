@@ -35,7 +35,8 @@ io::Scene emptyFloor() {
 }
 
 // Without a server: the requests of a file, one per line, each reply printed on a line of its own.
-void answerRequests(io::Scene scene, const std::string& name, const std::string& path) {
+void answerRequests(io::Scene scene, const std::string& name, const std::string& path,
+                    const std::string& viewerJs) {
   std::ifstream file;
   if (path != "-") {
     file.open(path);
@@ -43,6 +44,11 @@ void answerRequests(io::Scene scene, const std::string& name, const std::string&
   }
   std::istream& input = path == "-" ? std::cin : file;
   studio::Session session(std::move(scene), name);
+  // The page of a run needs the viewer's script; without one, only that request is refused.
+  const auto here =
+      viewerJs.empty() ? exporting::executableDirectory() : Result<std::filesystem::path>("");
+  session.setViewerBundle(here ? exporting::loadViewerBundle(viewerJs, *here)
+                               : Result<std::string>(Error{here.error()}));
   std::string line;
   while (std::getline(input, line)) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
@@ -63,12 +69,13 @@ void runStudio(const StudioArguments& arguments) {
   io::Scene scene = arguments.scene.empty() ? emptyFloor() : unwrap(io::readScene(arguments.scene));
   const std::string name = arguments.scene.empty() ? "a floor" : arguments.scene;
   if (!arguments.requests.empty())
-    return answerRequests(std::move(scene), name, arguments.requests);
+    return answerRequests(std::move(scene), name, arguments.requests, arguments.viewerJs);
   const std::filesystem::path here =
       arguments.viewerJs.empty() ? unwrap(exporting::executableDirectory()) : "";
   const std::string bundle = unwrap(exporting::loadViewerBundle(arguments.viewerJs, here));
 
   studio::Session session(std::move(scene), name);
+  session.setViewerBundle(bundle);
   studio::ServerOptions options;
   options.host = arguments.host;
   options.port = uint16_t(arguments.port);

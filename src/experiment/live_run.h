@@ -42,6 +42,9 @@ class LiveRun {
   // The time of the next event, if any remains.
   std::optional<Time> nextEventTime() const { return simulator_->nextEventTime(); }
   const sim::Statistics& statistics() const { return simulator_->statistics(); }
+  // The world now, and the motions under way in it (each mobile still at the cell it left).
+  const world::World& world() const { return simulator_->world(); }
+  int motionsInFlight() const { return simulator_->motionsInFlight(); }
   // The modules whose program is still at work now, by increasing id, and what each is doing (a
   // program that tells: ProgramSet::unfinished); a live front end shows it as the run goes.
   std::vector<algorithms::ModuleState> unfinished() const { return programs_->unfinished(); }

@@ -32,7 +32,9 @@ Time parseSeconds(const std::string& option, double seconds) {
     throw UsageError(fmt::format("{} {}: at most 1e9 seconds, about 31 years (docs/limits.md)",
                                  option, seconds));
   }
-  return Time(seconds * kSecond);
+  // To the nearest microsecond: truncating would make 0.3 s 299,999 us (0.3 * 1e6 is just under
+  // 300,000 in binary), and an event at 0.3 s would fall after `--until 0.3`.
+  return Time(std::llround(seconds * double(kSecond)));
 }
 
 Time parseMilliseconds(const std::string& option, double milliseconds) {
@@ -45,7 +47,7 @@ Time parseMilliseconds(const std::string& option, double milliseconds) {
     throw UsageError(fmt::format(
         "{} {}: at most 1e9 milliseconds, about 11.6 days (docs/limits.md)", option, milliseconds));
   }
-  return Time(milliseconds * kMillisecond);
+  return Time(std::llround(milliseconds * double(kMillisecond)));
 }
 
 geometry::Cell parseCell(const std::string& option, const std::string& text) {

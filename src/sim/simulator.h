@@ -118,6 +118,8 @@ class Simulator {
   // The world as the run left it, moved out of a simulator that is done with.
   world::World ended() && { return std::move(world_); }
   const Statistics& statistics() const { return statistics_.statistics(); }
+  // The motions under way now: started, their mobile not arrived yet (it is at the cell it left).
+  int motionsInFlight() const { return statistics_.motionsInFlight(); }
   // What the load judge has done, with gravity on; nothing with gravity off.
   const mechanics::JudgeCounts* loadCounts() const { return motions_.loadCounts(); }
   // What the actuators drew up to now, with a model of them; nothing without.

@@ -112,6 +112,8 @@ class StatisticsRecorder final : public Observer {
   }
 
   const Statistics& statistics() const { return statistics_; }
+  // The motions started and not ended yet.
+  int motionsInFlight() const { return inFlight_; }
 
  private:
   // A type's name is one constant, so its address identifies it: a few pointer comparisons per

@@ -29,7 +29,7 @@ namespace {
 
 constexpr std::string_view kOperations =
     "scene, add, remove, recolour, undo, redo, save, open, target, generate, moves, run, advance, "
-    "inspect, stop";
+    "inspect, stop, branch, trace, page";
 
 // The run's arguments a request may give, by the command line's names (without the dashes).
 constexpr std::string_view kRunKeys =
@@ -83,6 +83,9 @@ std::string Session::handle(std::string_view request) {
     }
     if (op == "inspect") return replyText(inspect(parsed), "");
     if (op == "stop") return replyText(stop(), "");
+    if (op == "branch") return replyText(branch(parsed), "");
+    if (op == "trace") return replyText(trace(), "");
+    if (op == "page") return replyText(page(), "");
     throw UsageError(fmt::format("unknown op \"{}\": one of {}", op, kOperations));
   } catch (const UsageError& error) {
     return Json{{"ok", false}, {"error", error.what()}}.dump();
@@ -286,9 +289,12 @@ Json Session::startRun(const Json& request) {
   }
   if (args.program.empty()) throw UsageError("run: \"program\" is needed");
   frontend::PreparedRun prepared = frontend::prepareRun(scene_, sceneName_, args);
+  RunStart runStart{scene_, sceneName_, prepared.request, prepared.world};
   auto started = experiment::LiveRun::start(std::move(prepared.world), table_, prepared.request);
   if (!started.ok()) throw UsageError(started.error());
   run_ = std::move(*started);
+  runStart_ = std::move(runStart);
+  lastTrace_.clear();
   runKind_ = prepared.kind;
   traceSent_ = 0;
   clock_ = 0;
@@ -366,6 +372,8 @@ Json Session::stop() {
   // The trace's last records, its footer among them: the page has the whole run.
   reply["trace_tail"] =
       output.result.trace.substr(std::min(traceSent_, output.result.trace.size()));
+  lastTrace_ = output.result.trace;
+  lastReached_ = clock_;
   runKind_.reset();
   return reply;
 }

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "datomsim/result.h"
 #include "experiment/live_run.h"
 #include "frontend/run_on_scene.h"
 #include "io/scene.h"
@@ -38,6 +39,9 @@ class Session {
 
   const io::Scene& scene() const { return scene_; }
   bool running() const { return run_ != nullptr; }
+
+  // The viewer's script, for the offline page of a run (`page`), or why it could not be had.
+  void setViewerBundle(Result<std::string> bundle) { viewerBundle_ = std::move(bundle); }
 
  private:
   using Json = nlohmann::json;
@@ -65,6 +69,13 @@ class Session {
   Json advance(const Json& request);
   Json inspect(const Json& request) const;
   Json stop();
+  // The history of a run (session_history.cpp): the scene at a moment of the last run as a new
+  // scene to edit and run (a branch), the run's trace, and the offline viewer page of it.
+  Json branch(const Json& request);
+  Json trace() const;
+  Json page() const;
+  // The trace of the run in progress, else of the last one, else nothing.
+  const std::string* runTrace() const;
   // The trace records the pages have not had yet, as one JSON array's text.
   std::string newRecords();
 
@@ -77,6 +88,19 @@ class Session {
   std::unique_ptr<experiment::LiveRun> run_;
   std::optional<algorithms::ProgramKind> runKind_;
   size_t traceSent_ = 0;
+  // What the last run started from, to run it again up to a moment (`branch`): the scene and its
+  // name, the run's request and the world as it was prepared for it (a start module added...).
+  struct RunStart {
+    io::Scene scene;
+    std::string name;
+    experiment::RunRequest request;
+    world::World world;
+  };
+  std::optional<RunStart> runStart_;
+  // The last run's whole trace once stopped, and the time it had been advanced to.
+  std::string lastTrace_;
+  Time lastReached_ = 0;
+  Result<std::string> viewerBundle_ = Error{"no viewer script was given to the studio"};
   // The time the run has been advanced to: an advance "by" counts from it (the last event may
   // lie well before it, in the middle of a motion).
   Time clock_ = 0;

@@ -73,6 +73,12 @@ export function startStudio(root) {
   // A scene file whose targets the scene takes (its modules are not taken).
   const targetInput = element('input', { id: 'ds-target', type: 'file', accept: '.json,.xml', title: 'A scene file whose targets the scene takes, its modules not' });
   targetInput.style.width = '170px';
+  // The run's history: a branch from the moment the timeline shows, the run's trace and offline
+  // page, a picture of the view.
+  const branchButton = element('button', { id: 'ds-branch', textContent: 'Branch', title: 'The scene at the moment the timeline shows, to edit and run again (undone with Undo)' });
+  const saveTrace = element('button', { id: 'ds-save-trace', textContent: 'Save trace', title: 'The run\'s trace, as datomsim run --trace writes it' });
+  const savePage = element('button', { id: 'ds-save-page', textContent: 'Save page', title: 'The run in a page that works offline, as datomsim view writes it' });
+  const screenshot = element('button', { id: 'ds-screenshot', textContent: 'Screenshot', title: 'The view as a PNG picture' });
   const movesPanel = element('div', { id: 'ds-moves-panel', className: 'ds-moves' });
   movesPanel.hidden = true;
   const status = element('div', { id: 'ds-status', className: 'ds-status', textContent: 'connecting...' });
@@ -86,6 +92,7 @@ export function startStudio(root) {
       colour, colourButton, movesButton, undoButton, redoButton),
     element('span', { className: 'ds-group' }, saveJson, saveXml, openInput, labelled('target', targetInput)),
     element('span', { className: 'ds-group' }, labelled('new', generateKind), generateOptions, generateButton),
+    element('span', { className: 'ds-group' }, branchButton, saveTrace, savePage, screenshot),
     status,
   );
   const stage = element('div', { id: 'datomsim-viewer' });
@@ -100,7 +107,7 @@ export function startStudio(root) {
   new ResizeObserver(fitBelowBar).observe(bar);
 
   // What the page knows, for the person and for tests (window.datomsimStudio.state()).
-  const state = { inspected: null, moves: null, modules: 0, running: false, over: false, time: 0, events: 0, motions: 0, error: null, result: null };
+  const state = { inspected: null, moves: null, modules: 0, running: false, over: false, time: 0, events: 0, motions: 0, error: null, result: null, ran: false, branch: null };
   let traceText = '';
   let app = null;
   let playing = false;
@@ -172,6 +179,9 @@ export function startStudio(root) {
         ? `; module ${state.inspected.id}: ${state.inspected.state ?? 'its program tells nothing'}`
         : '';
       status.textContent = `t = ${state.time.toFixed(2)} s, ${state.events} events, ${state.motions} motions${end}${inspected}`;
+    } else if (state.branch) {
+      const b = state.branch;
+      status.textContent = `the scene at ${b.time} s of the run: ${b.modules} modules, ${b.motions_undone} motions under way taken back (their mobiles where they started); edit it or Run`;
     } else {
       status.textContent = `${state.modules} modules; choose a program and Run, or edit the scene`;
     }
@@ -179,6 +189,7 @@ export function startStudio(root) {
     runButton.disabled = state.running;
     for (const button of [addButton, removeButton, colourButton, undoButton, redoButton, generateButton]) button.disabled = state.running;
     openInput.disabled = targetInput.disabled = state.running;
+    branchButton.disabled = saveTrace.disabled = !state.ran;
   }
 
   const token = new URLSearchParams(window.location.search).get('token');
@@ -218,6 +229,7 @@ export function startStudio(root) {
     }
     traceText = reply.trace_header;
     state.result = null;
+    state.branch = null;
     show(0, true);
     say();
   }
@@ -285,7 +297,7 @@ export function startStudio(root) {
     if (!took(reply)) return;
     traceText = '';
     append(reply.records);
-    Object.assign(state, { running: true, over: false, time: 0, events: 0, motions: 0, result: null, inspected: null });
+    Object.assign(state, { running: true, over: false, time: 0, events: 0, motions: 0, result: null, inspected: null, ran: true });
     show(0, true);
     say();
   });
@@ -329,17 +341,40 @@ export function startStudio(root) {
     movesPanel.hidden = true;
   });
 
+  function download(blob, name) {
+    const link = element('a', { href: URL.createObjectURL(blob), download: name });
+    link.click();
+    URL.revokeObjectURL(link.href);
+  }
   // The scene as a file, downloaded.
   const save = (format) => async () => {
     const reply = await ask({ op: 'save', format });
     if (!took(reply)) return;
-    const link = element('a', {
-      href: URL.createObjectURL(new Blob([reply.text], { type: format === 'xml' ? 'application/xml' : 'application/json' })),
-      download: `scene.${format}`,
-    });
-    link.click();
-    URL.revokeObjectURL(link.href);
+    download(new Blob([reply.text], { type: format === 'xml' ? 'application/xml' : 'application/json' }), `scene.${format}`);
   };
+  // The moment the timeline shows, as a new scene (the run stopped if it was going).
+  branchButton.addEventListener('click', async () => {
+    playing = false;
+    const reply = await ask({ op: 'branch', time: app.time });
+    if (!took(reply)) return;
+    Object.assign(state, { running: false, over: false, inspected: null });
+    await loadScene();
+    state.branch = reply;
+    say();
+  });
+  saveTrace.addEventListener('click', async () => {
+    const reply = await ask({ op: 'trace' });
+    if (took(reply)) download(new Blob([reply.text], { type: 'application/x-ndjson' }), 'run.jsonl');
+  });
+  savePage.addEventListener('click', async () => {
+    const reply = await ask({ op: 'page' });
+    if (took(reply)) download(new Blob([reply.text], { type: 'text/html' }), 'run.html');
+  });
+  // The canvas keeps its drawing (view3d.js: preserveDrawingBuffer), so it is read as shown.
+  screenshot.addEventListener('click', () => {
+    app.view.render();
+    app.view.renderer.domElement.toBlob((blob) => download(blob, 'studio.png'), 'image/png');
+  });
   generateButton.addEventListener('click', async () => {
     const request = { op: 'generate', kind: generateKind.value, ...generateFields(generateOptions.value) };
     if (took(await ask(request))) await loadScene();

@@ -17,19 +17,15 @@
 #include "geometry/cell_text.h"
 #include "io/json_scene.h"
 #include "io/scene_file.h"
+#include "session_support.h"
 
 namespace datomsim::studio {
 namespace {
 
 using nlohmann::json;
 
-io::Scene arch() {
-  return *io::readScene(std::string(DATOMSIM_SOURCE_DIR) + "/scenes/paper-arch-hole1.json");
-}
-
-json ask(Session& session, const json& request) {
-  return json::parse(session.handle(request.dump()));
-}
+using testing::arch;
+using testing::ask;
 
 // Refused with a message holding `expected`, and the scene as it was.
 void refused(Session& session, const std::string& request, const std::string& expected) {

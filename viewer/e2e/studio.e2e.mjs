@@ -236,6 +236,31 @@ try {
     assert(JSON.stringify(s.result.path) === JSON.stringify(expected.path), 'the path differs');
   });
 
+  await check('the run saved as its trace and page, a screenshot, and a branch from its middle', async () => {
+    const [traceFile] = await Promise.all([page.waitForEvent('download'), page.click('#ds-save-trace')]);
+    const saved = join(shots, 'studio-run.jsonl');
+    await traceFile.saveAs(saved);
+    const expected = join(shots, 'studio-cli.jsonl');
+    execFileSync(resolve(datomsim), ['-q', 'run', scene, '--program', 'follow-gradient', '--goal', '6,5,2', '--start', '0,0,2', '--trace', expected, '--out', join(shots, 'studio-cli.json')], { cwd: repository });
+    assert(readFileSync(saved, 'utf8') === readFileSync(expected, 'utf8'), 'the saved trace differs from datomsim run --trace');
+    const [pageFile] = await Promise.all([page.waitForEvent('download'), page.click('#ds-save-page')]);
+    await pageFile.saveAs(join(shots, 'studio-run.html'));
+    assert(readFileSync(join(shots, 'studio-run.html'), 'utf8').includes('id="datomsim-trace"'), 'the saved page holds no trace');
+    const [picture] = await Promise.all([page.waitForEvent('download'), page.click('#ds-screenshot')]);
+    await picture.saveAs(join(shots, 'studio-screenshot.png'));
+    const png = readFileSync(join(shots, 'studio-screenshot.png'));
+    assert(png.length > 1000 && png.subarray(1, 4).toString() === 'PNG', 'the screenshot is no PNG');
+    // Halfway through the first motion (0.15 s to 2.15 s): the mobile taken back to its start.
+    await page.evaluate(() => window.datomsimViewer.seek(1.15));
+    await page.click('#ds-branch');
+    await waitFor(() => /taken back/.test(document.querySelector('#ds-status').textContent));
+    const line = await page.textContent('#ds-status');
+    assert(/at 1\.15 s of the run: 131 modules, 1 motion under way/.test(line), line);
+    await page.screenshot({ path: join(shots, 'studio-branch.png') });
+    await page.click('#ds-undo');
+    await waitFor(() => window.datomsimStudio.state().branch === null);
+  });
+
   await check('a mover clicked during a reconfiguration says what its program is doing', async () => {
     await page.selectOption('#ds-generate-kind', 'reshape');
     await page.fill('#ds-generate-options', 'case=line length=8');

@@ -181,7 +181,7 @@ export function startStudio(root) {
       status.textContent = `t = ${state.time.toFixed(2)} s, ${state.events} events, ${state.motions} motions${end}${inspected}`;
     } else if (state.branch) {
       const b = state.branch;
-      status.textContent = `the scene at ${b.time} s of the run: ${b.modules} modules, ${b.motions_undone} motions under way taken back (their mobiles where they started); edit it or Run`;
+      status.textContent = `the scene at ${b.time} s of the run: ${b.modules} modules, ${b.motions_undone} motion${b.motions_undone === 1 ? '' : 's'} under way taken back (their mobiles where they started); edit it or Run`;
     } else {
       status.textContent = `${state.modules} modules; choose a program and Run, or edit the scene`;
     }

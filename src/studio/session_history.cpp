@@ -41,6 +41,9 @@ Json Session::branch(const Json& request) {
   const int undone = (*replay)->motionsInFlight();
   const bool stopped = running();
   if (stopped) {
+    // Kept as a stopped run's: its trace so far, and the moment reached, for the next branch.
+    lastTrace_ = run_->traceSoFar();
+    lastReached_ = clock_;
     run_.reset();
     runKind_.reset();
   }

@@ -170,6 +170,11 @@ TEST(StudioHistory, ABranchDuringARunEndsItAndAScenePassedIsRefused) {
   EXPECT_EQ(reply.at("time").get<double>(), 2.05);
   EXPECT_FALSE(session.running());
   EXPECT_EQ(posesOf(session.scene()), posesAt(commandLineTrace(), 2.05).first);
+  // The run ended so is kept as it stood: its trace so far, and a branch up to 3.3 s again.
+  const std::string trace = ask(session, {{"op", "trace"}}).at("text").get<std::string>();
+  EXPECT_EQ(trace, commandLineTrace().substr(0, trace.size()));
+  EXPECT_TRUE(ask(session, {{"op", "branch"}, {"time", 3.2}}).at("ok").get<bool>());
+  EXPECT_FALSE(ask(session, {{"op", "branch"}, {"time", 3.4}}).at("ok").get<bool>());
   // The branch is a scene like any other: edited, run.
   EXPECT_TRUE(ask(session, {{"op", "add"}, {"cell", "9,9,1"}}).at("ok").get<bool>());
   EXPECT_TRUE(ask(session, kRun).at("ok").get<bool>());

@@ -122,8 +122,8 @@ TEST(StudioHistory, ABranchIsTheWorldTheTraceGivesAtThatMoment) {
   for (std::string line; std::getline(lines, line);) {
     const json record = json::parse(line);
     if (record.contains("motion")) {
-      moments.push_back((record.at("t").get<double>() + record.at("motion").at("end").get<double>()) /
-                        2);
+      moments.push_back(
+          (record.at("t").get<double>() + record.at("motion").at("end").get<double>()) / 2);
     }
   }
   ASSERT_GE(moments.size(), 5u);
@@ -154,7 +154,8 @@ TEST(StudioHistory, ABranchDuringARunEndsItAndAScenePassedIsRefused) {
   ASSERT_TRUE(ask(session, {{"op", "advance"}, {"until", 3.3}}).at("ok").get<bool>());
   for (const auto& [request, expected] : std::vector<std::pair<json, std::string>>{
            {{{"op", "branch"}}, "branch: give \"time\""},
-           {{{"op", "branch"}, {"time", 5}}, "branch: time 5 s is after the 3.3 s the run has reached"},
+           {{{"op", "branch"}, {"time", 5}},
+            "branch: time 5 s is after the 3.3 s the run has reached"},
            {{{"op", "branch"}, {"time", -1}}, "time -1: a finite number of seconds, above 0"},
            {{{"op", "branch"}, {"time", "2"}}, "\"time\" must be a number"},
        }) {
@@ -198,8 +199,8 @@ TEST(StudioHistory, ThePageIsTheViewersPageOfTheRun) {
   ASSERT_TRUE(page.at("ok").get<bool>()) << page;
   // `datomsim view` titles a trace's page with its description.
   EXPECT_EQ(page.at("text").get<std::string>(),
-            *exporting::viewerHtml(bundle, {"follow-gradient on arch", trace, std::nullopt,
-                                            std::nullopt}));
+            *exporting::viewerHtml(bundle,
+                                   {"follow-gradient on arch", trace, std::nullopt, std::nullopt}));
 }
 
 }  // namespace

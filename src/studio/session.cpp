@@ -95,10 +95,8 @@ std::string Session::handle(std::string_view request) {
   }
 }
 
-Json Session::describe() const {
-  Json reply;
-  reply["scene"] = Json::parse(io::toJson(scene_));
-  // The viewer draws a scene at rest from a trace's header alone.
+// The viewer draws a scene at rest from a trace's header alone.
+std::string Session::sceneHeader() const {
   record::TraceWriter header(scene_.moduleKind);
   std::vector<std::vector<Cell>> targets;
   for (const target::Target& target : scene_.targets) {
@@ -106,7 +104,13 @@ Json Session::describe() const {
     if (cells.ok()) targets.push_back(std::move(*cells));
   }
   header.header(scene_.world, sceneName_, targets);
-  reply["trace_header"] = header.text();
+  return header.text();
+}
+
+Json Session::describe() const {
+  Json reply;
+  reply["scene"] = Json::parse(io::toJson(scene_));
+  reply["trace_header"] = sceneHeader();
   reply["running"] = running();
   reply["can_undo"] = !undo_.empty();
   reply["can_redo"] = !redo_.empty();

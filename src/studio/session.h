@@ -47,6 +47,8 @@ class Session {
   using Json = nlohmann::json;
   // Each operation: its reply's values, or a frontend::UsageError naming what is wrong.
   Json describe() const;
+  // The scene as a trace's header: what the viewer draws a scene at rest from.
+  std::string sceneHeader() const;
   Json edit(const Json& request, bool add);
   Json recolour(const Json& request);
   // A scene and the name runs give it, as the history keeps them.

@@ -96,7 +96,7 @@ Json Session::page() const {
     page.trace = *trace;
   } else {
     page.title = sceneName_;
-    page.trace = describe().at("trace_header").get<std::string>();
+    page.trace = sceneHeader();
   }
   Json reply;
   reply["text"] = frontend::unwrap(exporting::viewerHtml(*viewerBundle_, page));

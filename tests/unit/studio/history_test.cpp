@@ -32,13 +32,7 @@ const json kRun = {{"op", "run"},
 
 // The command line's run with the same arguments as kRun.
 std::string commandLineTrace() {
-  frontend::RunArguments args;
-  args.program = "follow-gradient";
-  args.goal = "6,5,2";
-  args.start = "0,0,2";
-  args.seed = "3";
-  args.wantTrace = true;
-  return frontend::runOnScene(arch(), "arch", args).result.trace;
+  return testing::commandLineRun().result.trace;
 }
 
 // Runs kRun to its end and stops it.

@@ -26,6 +26,7 @@ using nlohmann::json;
 
 using testing::arch;
 using testing::ask;
+using testing::commandLineRun;
 
 // Refused with a message holding `expected`, and the scene as it was.
 void refused(Session& session, const std::string& request, const std::string& expected) {
@@ -239,23 +240,6 @@ TEST(StudioSession, MovesAtACellAreTheCommandLines) {
   EXPECT_LT(valid, reply.at("moves").at("moves").size());
   refused(session, R"({"op": "moves", "at": "400,0,0"})", "at 400,0,0");
 }
-
-// The run as the command line runs it, with the same arguments. (GCC 12 at -O3 warns of an
-// overlap in assigning the literals, a false positive: its bug 105329.)
-#pragma GCC diagnostic push
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wrestrict"
-#endif
-frontend::RunOutput commandLineRun() {
-  frontend::RunArguments args;
-  args.program = "follow-gradient";
-  args.goal = "6,5,2";
-  args.start = "0,0,2";
-  args.seed = "3";
-  args.wantTrace = true;
-  return frontend::runOnScene(arch(), "arch", args);
-}
-#pragma GCC diagnostic pop
 
 // Starts the same run in the studio.
 json startRun(Session& session) {
